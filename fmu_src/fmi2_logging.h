@@ -1,0 +1,28 @@
+/* Logging through the master's callback, with fully formatted messages. */
+#ifndef ANGULAR_KINEMATICS_FMI2_LOGGING_H
+#define ANGULAR_KINEMATICS_FMI2_LOGGING_H
+
+#include <stdbool.h>
+
+#include "fmi2_instance.h"
+
+#if defined(__GNUC__)
+#define AK_PRINTF_FORMAT(f, a) __attribute__((format(printf, f, a)))
+#else
+#define AK_PRINTF_FORMAT(f, a)
+#endif
+
+/* Logs a message in a category, if that category is enabled and the master gave a logger. */
+void ak_log(const ak_instance *instance, ak_log_category category, fmi2Status status,
+            const char *format, ...) AK_PRINTF_FORMAT(4, 5);
+
+/* For fmi2Instantiate, before an instance exists: always logs, if there is a logger. */
+void ak_log_before_instance(const fmi2CallbackFunctions *functions, fmi2String instance_name,
+                            const char *format, ...) AK_PRINTF_FORMAT(3, 4);
+
+const char *ak_log_category_name(ak_log_category category);
+
+/* Finds a category by its <LogCategories> name; false when there is none of that name. */
+bool ak_log_category_find(const char *name, ak_log_category *category);
+
+#endif

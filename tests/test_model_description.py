@@ -1,0 +1,106 @@
+"""modelDescription.xml: valid, and in agreement with the C variable table it is built with."""
+import math
+import zipfile
+
+import reference
+from fmpy.validation import validate_fmu
+
+DISPLAY_UNITS = {"rad": "deg", "rad/s": "deg/s", "rad/s2": "deg/s2"}
+
+
+def test_fmpy_validation_finds_no_problem(fmu_path):
+    assert validate_fmu(fmu_path) == []
+
+
+def test_fmu_archive_holds_description_binary_and_documentation(fmu_path, root):
+    with zipfile.ZipFile(fmu_path) as archive:
+        names = set(archive.namelist())
+        packaged = archive.read("modelDescription.xml")
+    assert {"modelDescription.xml", "binaries/linux64/AngularKinematics.so",
+            "documentation/index.html"} <= names
+    assert packaged == (root / "modelDescription.xml").read_bytes(), \
+        "the packaged modelDescription.xml is not the repository's"
+
+
+def test_identity_agrees_with_c_table(model_description, c_table):
+    assert model_description.guid == c_table["guid"]
+    assert model_description.coSimulation.modelIdentifier == c_table["modelIdentifier"]
+    assert model_description.fmiVersion == "2.0"
+    assert model_description.variableNamingConvention == "structured"
+
+
+def test_variables_agree_with_c_table(model_description, c_table):
+    xml = {v.valueReference: v for v in model_description.modelVariables}
+    table = {v["valueReference"]: v for v in c_table["variables"]}
+    assert sorted(xml) == sorted(table)
+    for vr, row in table.items():
+        variable = xml[vr]
+        assert variable.name == row["name"]
+        assert variable.causality == row["causality"]
+        assert variable.type == "Real"
+        assert variable.variability == "continuous"
+        assert variable.declaredType.name == row["declaredType"]
+        assert variable.unit == row["unit"] or variable.declaredType.unit == row["unit"]
+        assert variable.description == row["description"]
+        if row["causality"] == "input":
+            assert float(variable.start) == row["start"]
+        else:
+            assert variable.start is None
+
+
+def test_interface_names_units_and_display_units(model_description):
+    names = [v.name for v in model_description.modelVariables]
+    assert names == reference.INPUT_NAMES + reference.OUTPUT_NAMES
+    units = {u.name: [d.name for d in u.displayUnits] for u in model_description.unitDefinitions}
+    for variable in model_description.modelVariables:
+        unit = variable.declaredType.unit
+        assert unit in DISPLAY_UNITS
+        assert variable.declaredType.displayUnit == DISPLAY_UNITS[unit]
+        assert units[unit] == [DISPLAY_UNITS[unit]]
+    for unit in model_description.unitDefinitions:
+        assert unit.displayUnits[0].factor == math.degrees(1.0)
+        assert unit.baseUnit.rad == 1
+        assert unit.baseUnit.s == {"rad": 0, "rad/s": -1, "rad/s2": -2}[unit.name]
+
+
+def test_model_structure_is_the_c_table_dependencies(model_description, c_table):
+    variables = model_description.modelVariables
+    table = {v["name"]: sorted(v["dependencies"]) for v in c_table["variables"]
+             if v["causality"] == "output"}
+    for section in (model_description.outputs, model_description.initialUnknowns):
+        listed = {u.variable.name: sorted(d.valueReference for d in u.dependencies) for u in section}
+        assert listed == table
+    assert [u.variable for u in model_description.outputs] == [v for v in variables
+                                                             if v.causality == "output"]
+
+
+def test_model_structure_is_exactly_the_reference_dependencies(model_description):
+    """No false dependency (a false algebraic loop for importers) and none missing."""
+    expected = reference.output_dependencies()
+    for unknown in model_description.outputs:
+        assert {d.name for d in unknown.dependencies} == expected[unknown.variable.name]
+
+
+def test_default_experiment(model_description):
+    experiment = model_description.defaultExperiment
+    assert experiment is not None
+    assert float(experiment.stopTime) > float(experiment.startTime)
+    assert float(experiment.stepSize) > 0
+
+
+def test_capability_flags(model_description):
+    """Only what works and is tested is claimed; the refusals are tested in test_fmi_calls.py."""
+    cs = model_description.coSimulation
+    assert cs.canHandleVariableCommunicationStepSize is True
+    assert cs.canBeInstantiatedOnlyOncePerProcess is False
+    assert cs.canInterpolateInputs is False
+    assert cs.maxOutputDerivativeOrder == 0
+    assert cs.canGetAndSetFMUstate is False
+    assert cs.canSerializeFMUstate is False
+    assert cs.providesDirectionalDerivative is False
+    assert model_description.modelExchange is None
+
+
+def test_log_categories(model_description):
+    assert [c.name for c in model_description.logCategories] == [
+        "logStatusError", "logStatusWarning", "logCalls"]
