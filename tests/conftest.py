@@ -4,6 +4,7 @@ import ctypes
 import json
 import pathlib
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -15,6 +16,7 @@ from fmpy.logging import addLoggerProxy
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 FMU_PATH = ROOT / "dist" / "AngularKinematics.fmu"
 BUILD_DIR = ROOT / "build"
+sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
 
 STATUS = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal", 5: "Pending"}
 FIGURES = pytest.StashKey[list]()

@@ -1,0 +1,315 @@
+"""FMI 2.0 behaviour through fmpy: state machine, direct feedthrough, stepping, reset, logging,
+refused capabilities, and instances side by side."""
+import ctypes
+
+import numpy as np
+import pytest
+
+import reference
+
+INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
+
+
+def evaluations(instance):
+    return sum("kinematics evaluated" in m for _, _, m in instance.messages)
+
+
+def expected_outputs(inputs):
+    return reference.outputs([inputs[n] for n in reference.INPUT_NAMES])
+
+
+# --- State machine -------------------------------------------------------------------------------
+
+ILLEGAL_IN_INSTANTIATED = [
+    ("fmi2ExitInitializationMode", ()),
+    ("fmi2DoStep", (0.0, 0.1, 1)),
+    ("fmi2Terminate", ()),
+    ("fmi2GetReal", ((ctypes.c_uint * 1)(9), 1, (ctypes.c_double * 1)())),
+    ("fmi2CancelStep", ()),
+]
+
+
+@pytest.mark.parametrize("function,args", ILLEGAL_IN_INSTANTIATED)
+def test_illegal_call_in_instantiated_state(function, args, make_instance):
+    instance = make_instance()
+    assert instance.call(function, *args) == 3
+    assert instance.errors() == [f"{function}: illegal call in state Instantiated"]
+    # Nothing was lost: the instance goes on as if the call had not been made.
+    instance.initialize(inputs=INPUTS)
+    assert np.allclose(instance.get(reference.OUTPUT_NAMES), expected_outputs(INPUTS), rtol=1e-14)
+
+
+def test_illegal_calls_after_initialization_and_termination(make_instance):
+    instance = make_instance()
+    instance.initialize()
+    for function in ("fmi2SetupExperiment", "fmi2EnterInitializationMode"):
+        args = (0, 0.0, 0.0, 0, 0.0) if function == "fmi2SetupExperiment" else ()
+        assert instance.call(function, *args) == 3
+    assert instance.call("fmi2ExitInitializationMode") == 3
+    assert instance.call("fmi2Terminate") == 0
+    assert instance.call("fmi2DoStep", 0.0, 0.1, 1) == 3
+    assert instance.set({"theta[1]": 1.0}) == 3
+    assert instance.call("fmi2Terminate") == 3
+    assert instance.errors() == [
+        "fmi2SetupExperiment: illegal call in state StepComplete",
+        "fmi2EnterInitializationMode: illegal call in state StepComplete",
+        "fmi2ExitInitializationMode: illegal call in state StepComplete",
+        "fmi2DoStep: illegal call in state Terminated",
+        "fmi2SetReal: illegal call in state Terminated",
+        "fmi2Terminate: illegal call in state Terminated",
+    ]
+    # Outputs can still be read after fmi2Terminate.
+    assert np.allclose(instance.get(["omega_fixed[1]"]), [0.0])
+
+
+def test_inputs_settable_before_initialization(make_instance):
+    instance = make_instance()
+    assert instance.set(INPUTS) == 0
+    instance.initialize()
+    assert np.allclose(instance.get(reference.OUTPUT_NAMES), expected_outputs(INPUTS), rtol=1e-14)
+
+
+def test_null_instance_is_refused_without_crash(make_instance):
+    instance = make_instance()
+    functions = instance.fmu._functions
+    assert functions["fmi2DoStep"](None, 0.0, 0.1, 1) == 3
+    assert functions["fmi2SetReal"](None, None, 0, None) == 3
+    assert functions["fmi2Reset"](None) == 3
+    functions["fmi2FreeInstance"](None)  # ignored, as the standard says
+
+
+# --- Direct feedthrough and lazy evaluation ------------------------------------------------------
+
+def test_outputs_valid_right_after_initialization(make_instance):
+    instance = make_instance()
+    instance.initialize(inputs=INPUTS)
+    assert np.allclose(instance.get(reference.OUTPUT_NAMES), expected_outputs(INPUTS), rtol=1e-14)
+
+
+def test_get_after_set_at_same_communication_point_follows_new_inputs(make_instance):
+    instance = make_instance(logging_on=True)
+    instance.initialize(inputs=INPUTS)
+    instance.fmu.doStep(0.0, 0.1)
+    changed = dict(INPUTS, **{"theta[2]": 1.4, "theta_dot[1]": -3.0})
+    for _ in range(3):  # a master iterating an algebraic loop at t = 0.1
+        assert instance.set(changed) == 0
+        assert np.allclose(instance.get(reference.OUTPUT_NAMES), expected_outputs(changed), rtol=1e-14)
+        changed["theta_ddot[3]"] += 1.0
+
+
+def test_outputs_computed_once_and_only_when_an_input_changed(make_instance):
+    instance = make_instance(logging_on=True)
+    instance.initialize(inputs=INPUTS)
+    assert evaluations(instance) == 1
+    for _ in range(5):
+        instance.get(reference.OUTPUT_NAMES)
+        instance.fmu.doStep(instance.fmu.getRealStatus(2), 0.1)
+    instance.set(INPUTS)  # the same values again: nothing changed
+    instance.get(reference.OUTPUT_NAMES)
+    assert evaluations(instance) == 1
+    instance.set({"theta[3]": 0.0})
+    instance.set({"theta_dot[3]": 0.0})
+    assert evaluations(instance) == 1  # setting alone computes nothing
+    instance.get(["alpha_body[1]"])
+    instance.get(reference.OUTPUT_NAMES)
+    assert evaluations(instance) == 2
+
+
+# --- Stepping ------------------------------------------------------------------------------------
+
+def test_variable_steps_and_stop_time(make_instance):
+    instance = make_instance()
+    instance.initialize(stop_time=1.0, inputs=INPUTS)
+    t = 0.0
+    for h in (0.1, 0.013, 0.25, 1e-6, 0.3):
+        assert instance.call("fmi2DoStep", t, h, 1) == 0
+        t += h
+        assert instance.fmu.getRealStatus(2) == t  # fmi2LastSuccessfulTime
+    assert instance.call("fmi2DoStep", t, 1.0 - t, 1) == 0  # lands on the stop time
+    assert instance.call("fmi2DoStep", 1.0, 0.1, 1) == 3
+    assert instance.errors()[-1] == (
+        "fmi2DoStep: the step from 1 by communicationStepSize = 0.10000000000000001 ends at "
+        "1.1000000000000001, past stopTime = 1")
+
+
+@pytest.mark.parametrize("t,h,message", [
+    (0.0, 0.0, "fmi2DoStep: communicationStepSize = 0 must be > 0"),
+    (0.0, -0.1, "fmi2DoStep: communicationStepSize = -0.1 must be > 0"),
+    (0.0, float("nan"), "fmi2DoStep: currentCommunicationPoint = 0 and communicationStepSize = nan "
+                        "must be finite"),
+    (float("inf"), 0.1, "fmi2DoStep: currentCommunicationPoint = inf and communicationStepSize = 0.1 "
+                        "must be finite"),
+    (0.5, 0.1, "fmi2DoStep: currentCommunicationPoint = 0.5 does not continue from the last "
+               "communication point 0.20000000000000001"),
+])
+def test_bad_step_is_refused_and_changes_nothing(t, h, message, make_instance):
+    instance = make_instance()
+    instance.initialize(inputs=INPUTS)
+    instance.fmu.doStep(0.0, 0.2)
+    assert instance.call("fmi2DoStep", t, h, 1) == 3
+    assert instance.errors() == [message]
+    assert instance.fmu.getRealStatus(2) == 0.2
+    assert instance.call("fmi2DoStep", 0.2, 0.1, 1) == 0
+
+
+def test_step_within_relative_tolerance_of_last_point_is_accepted(make_instance):
+    instance = make_instance()
+    instance.initialize()
+    t = 0.0
+    for _ in range(10):
+        assert instance.call("fmi2DoStep", t, 0.1, 1) == 0
+        t += 0.1
+    # A master that computes the time as n * h differs from the sum of its steps in the last bits.
+    assert instance.call("fmi2DoStep", 10 * 0.1, 0.1, 1) == 0
+
+
+@pytest.mark.parametrize("args,message", [
+    ((0, 0.0, float("nan"), 0, 0.0), "fmi2SetupExperiment: startTime = nan is not finite"),
+    ((0, 0.0, 1.0, 1, 0.5), "fmi2SetupExperiment: stopTime = 0.5 must be finite and >= startTime = 1"),
+    ((1, -1e-6, 0.0, 0, 0.0), "fmi2SetupExperiment: tolerance = -1e-06 must be finite and >= 0"),
+])
+def test_bad_experiment_setup_is_refused(args, message, make_instance):
+    instance = make_instance()
+    assert instance.call("fmi2SetupExperiment", *args) == 3
+    assert instance.errors() == [message]
+    assert instance.call("fmi2SetupExperiment", 0, 0.0, 2.0, 1, 3.0) == 0
+    instance.fmu.enterInitializationMode()
+    instance.fmu.exitInitializationMode()
+    assert instance.fmu.getRealStatus(2) == 2.0
+
+
+def test_status_queries(make_instance):
+    instance = make_instance()
+    instance.initialize(start_time=1.5)
+    assert instance.fmu.getRealStatus(2) == 1.5
+    assert instance.fmu.getBooleanStatus(3) == 0
+    status = ctypes.c_int()
+    assert instance.call("fmi2GetStatus", 0, ctypes.byref(status)) == 2  # fmi2Discard
+    assert instance.call("fmi2GetRealStatus", 2, None) == 3
+    assert instance.errors() == ["fmi2GetRealStatus: value is NULL"]
+
+
+# --- Reset, terminate, free ----------------------------------------------------------------------
+
+def test_reset_returns_to_just_instantiated(make_instance):
+    instance = make_instance()
+    instance.initialize(start_time=3.0, stop_time=4.0, inputs=INPUTS)
+    instance.fmu.doStep(3.0, 0.5)
+    assert instance.call("fmi2Reset") == 0
+    # Just instantiated: initialization may start again, inputs are back at their start values.
+    assert instance.call("fmi2DoStep", 3.5, 0.1, 1) == 3
+    instance.initialize(start_time=0.0)
+    assert np.array_equal(instance.get(reference.INPUT_NAMES + reference.OUTPUT_NAMES), np.zeros(21))
+    assert instance.call("fmi2DoStep", 0.0, 10.0, 1) == 0  # no stop time any more
+
+
+def test_reset_from_every_reachable_state(make_instance):
+    instance = make_instance()
+    for setup in ("instantiated", "initialization", "step_complete", "terminated"):
+        assert instance.call("fmi2Reset") == 0
+        if setup != "instantiated":
+            instance.fmu.setupExperiment(startTime=0.0)
+            instance.fmu.enterInitializationMode()
+        if setup in ("step_complete", "terminated"):
+            instance.fmu.exitInitializationMode()
+        if setup == "terminated":
+            instance.fmu.terminate()
+        assert instance.call("fmi2Reset") == 0
+        instance.initialize(inputs=INPUTS)
+        assert np.allclose(instance.get(reference.OUTPUT_NAMES), expected_outputs(INPUTS), rtol=1e-14)
+        assert instance.call("fmi2Reset") == 0
+
+
+def test_many_instantiate_free_cycles(make_instance, unzipdir, model_description):
+    # Each cycle allocates and frees; a leak or double free would show under the sanitizers too.
+    for n in range(200):
+        instance = make_instance(name=f"cycle{n}")
+        instance.initialize(inputs=INPUTS)
+        instance.fmu.doStep(0.0, 0.1)
+        instance.fmu.terminate()
+        instance.free()
+
+
+# --- Instances side by side ----------------------------------------------------------------------
+
+def test_two_instances_with_different_inputs(make_instance):
+    first, second = make_instance("first"), make_instance("second")
+    other = dict(zip(reference.INPUT_NAMES, [-1.0, 1.5, 0.2, 4.0, 0.1, -0.3, 0.0, 9.0, -2.0]))
+    first.initialize(inputs=INPUTS)
+    second.initialize(inputs=other)
+    for t in (0.0, 0.1, 0.2):
+        first.fmu.doStep(t, 0.1)
+        second.fmu.doStep(t, 0.1)
+        assert np.allclose(first.get(reference.OUTPUT_NAMES), expected_outputs(INPUTS), rtol=1e-14)
+        assert np.allclose(second.get(reference.OUTPUT_NAMES), expected_outputs(other), rtol=1e-14)
+    second.free()
+    assert np.allclose(first.get(reference.OUTPUT_NAMES), expected_outputs(INPUTS), rtol=1e-14)
+
+
+# --- Logging -------------------------------------------------------------------------------------
+
+def test_call_trace_only_when_asked(make_instance):
+    quiet = make_instance("quiet")
+    quiet.initialize(inputs=INPUTS)
+    quiet.get(["omega_body[1]"])
+    assert quiet.messages == []
+
+    traced = make_instance("traced", logging_on=True)
+    traced.initialize(inputs=INPUTS)
+    categories = {c for _, c, _ in traced.messages}
+    assert categories == {"logCalls"}
+    calls = [m for _, _, m in traced.messages]
+    assert calls[:4] == ['fmi2Instantiate: instance "traced" created', "fmi2SetupExperiment",
+                         "fmi2EnterInitializationMode", "fmi2SetReal"]
+    assert "fmi2SetReal: theta[1] = 0.29999999999999999" in calls
+
+
+def test_set_debug_logging_by_category(make_instance):
+    instance = make_instance()
+    instance.fmu.setDebugLogging(True, ["logCalls"])
+    instance.initialize()
+    assert "fmi2ExitInitializationMode" in [m for _, _, m in instance.messages]
+    instance.fmu.setDebugLogging(False, ["logCalls", "logStatusError"])
+    count = len(instance.messages)
+    instance.get(["theta[1]"])
+    assert instance.call("fmi2DoStep", 5.0, 0.1, 1) == 3  # an error, logged in a category that is off
+    assert len(instance.messages) == count
+    instance.fmu.setDebugLogging(True, [])  # every category on
+    assert instance.call("fmi2DoStep", 5.0, 0.1, 1) == 3
+    assert len(instance.errors()) == 1
+
+
+def test_set_debug_logging_rejects_unknown_category(make_instance):
+    instance = make_instance()
+    categories = (ctypes.c_char_p * 2)(b"logCalls", b"logEverything%s")
+    assert instance.call("fmi2SetDebugLogging", 1, 2, categories) == 3
+    assert instance.errors() == [
+        'fmi2SetDebugLogging: categories[1] = "logEverything%s" is not a log category of this FMU '
+        "(logStatusError, logStatusWarning, logCalls)"]
+    instance.initialize()
+    assert not any(c == "logCalls" for _, c, _ in instance.messages)  # logCalls was not switched on
+    assert instance.call("fmi2SetDebugLogging", 1, 1, None) == 3
+
+
+# --- Capabilities this FMU does not claim --------------------------------------------------------
+
+REFUSED = [
+    ("fmi2GetFMUstate", (ctypes.byref(ctypes.c_void_p()),), 'canGetAndSetFMUstate="false"'),
+    ("fmi2SetFMUstate", (None,), 'canGetAndSetFMUstate="false"'),
+    ("fmi2FreeFMUstate", (ctypes.byref(ctypes.c_void_p()),), 'canGetAndSetFMUstate="false"'),
+    ("fmi2SerializedFMUstateSize", (None, ctypes.byref(ctypes.c_size_t())), 'canSerializeFMUstate="false"'),
+    ("fmi2SerializeFMUstate", (None, None, 0), 'canSerializeFMUstate="false"'),
+    ("fmi2DeSerializeFMUstate", (None, 0, ctypes.byref(ctypes.c_void_p())), 'canSerializeFMUstate="false"'),
+    ("fmi2GetDirectionalDerivative", (None, 0, None, 0, None, None), 'providesDirectionalDerivative="false"'),
+    ("fmi2SetRealInputDerivatives", (None, 0, None, None), 'canInterpolateInputs="false"'),
+    ("fmi2GetRealOutputDerivatives", (None, 0, None, None), 'maxOutputDerivativeOrder="0"'),
+]
+
+
+@pytest.mark.parametrize("function,args,flag", REFUSED)
+def test_functions_behind_false_flags_refuse(function, args, flag, make_instance):
+    instance = make_instance()
+    instance.initialize()
+    instance.fmu.doStep(0.0, 0.1)
+    assert instance.call(function, *args) == 3
+    assert instance.errors() == [f"{function}: not supported by this FMU ({flag} in modelDescription.xml)"]
