@@ -38,7 +38,7 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config):
 def report(request):
     """Records a measured figure, printed at the end of the run."""
     def record(line):
-        request.config.stash[FIGURES].append(f"{request.node.name}: {line}")
+        request.config.stash[FIGURES].append(f"{request.node.nodeid}: {line}")
     return record
 
 
