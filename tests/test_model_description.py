@@ -106,7 +106,7 @@ def test_capability_flags(model_description):
     for interface in (cs, me):
         assert interface.canGetAndSetFMUstate is False
         assert interface.canSerializeFMUstate is False
-        assert interface.providesDirectionalDerivative is False
+        assert interface.providesDirectionalDerivative is True  # test_directional_derivatives.py
         assert interface.canBeInstantiatedOnlyOncePerProcess is False
         assert interface.canNotUseMemoryManagementFunctions is False
 
