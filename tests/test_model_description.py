@@ -104,8 +104,8 @@ def test_capability_flags(model_description):
     assert model_description.numberOfEventIndicators == 0
     assert model_description.derivatives == []
     for interface in (cs, me):
-        assert interface.canGetAndSetFMUstate is False
-        assert interface.canSerializeFMUstate is False
+        assert interface.canGetAndSetFMUstate is True  # test_fmu_state.py
+        assert interface.canSerializeFMUstate is True  # test_fmu_state.py
         assert interface.providesDirectionalDerivative is True  # test_directional_derivatives.py
         assert interface.canBeInstantiatedOnlyOncePerProcess is False
         assert interface.canNotUseMemoryManagementFunctions is False
