@@ -93,7 +93,7 @@ def test_capability_flags(model_description):
     cs = model_description.coSimulation
     assert cs.canHandleVariableCommunicationStepSize is True  # test_variable_steps.py
     assert cs.canBeInstantiatedOnlyOncePerProcess is False  # test_fmi_calls.py (two instances)
-    assert cs.canInterpolateInputs is False
+    assert cs.canInterpolateInputs is True  # test_input_interpolation.py
     assert cs.maxOutputDerivativeOrder == 0
     assert cs.canRunAsynchronuously is False  # test_fmi_calls.py (fmi2CancelStep refused)
     me = model_description.modelExchange
