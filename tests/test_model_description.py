@@ -94,7 +94,7 @@ def test_capability_flags(model_description):
     assert cs.canHandleVariableCommunicationStepSize is True  # test_variable_steps.py
     assert cs.canBeInstantiatedOnlyOncePerProcess is False  # test_fmi_calls.py (two instances)
     assert cs.canInterpolateInputs is True  # test_input_interpolation.py
-    assert cs.maxOutputDerivativeOrder == 0
+    assert cs.maxOutputDerivativeOrder == 1  # test_output_derivatives.py
     assert cs.canRunAsynchronuously is False  # test_fmi_calls.py (fmi2CancelStep refused)
     me = model_description.modelExchange
     assert me is not None  # test_model_exchange.py
