@@ -151,3 +151,13 @@ def test_null_arrays_and_overflow(make_instance):
     assert instance.fmu.getRealStatus(2) == 0.0  # the step was not taken
     assert instance.get(["theta[1]"])[0] == 0.3
     assert instance.call("fmi2DoStep", 0.0, 1e-9, 1) == 0
+
+
+def test_reset_forgets_the_derivatives(make_instance):
+    instance = make_instance()
+    instance.initialize(inputs=INPUTS)
+    assert set_derivatives(instance, [("theta[1]", 1, 1.0), ("theta_dot[2]", 2, 3.0)]) == 0
+    assert instance.call("fmi2Reset") == 0
+    instance.initialize(inputs=INPUTS)
+    assert instance.call("fmi2DoStep", 0.0, 0.5, 1) == 0
+    assert np.array_equal(instance.get(reference.INPUT_NAMES), list(INPUTS.values()))
