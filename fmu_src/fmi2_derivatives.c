@@ -165,6 +165,8 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
     const double theta_dddot[3] = {instance->input_derivatives[AK_VR_THETA_DDOT + 0][0],
                                    instance->input_derivatives[AK_VR_THETA_DDOT + 1][0],
                                    instance->input_derivatives[AK_VR_THETA_DDOT + 2][0]};
+    const bool jerk_assumed = theta_dddot[0] == 0.0 && theta_dddot[1] == 0.0 &&
+                              theta_dddot[2] == 0.0;
     double jerk[6]; /* fixed, then body components */
     ak_angular_jerk_123(&v[AK_VR_THETA], &v[AK_VR_THETA_DOT], &v[AK_VR_THETA_DDOT], theta_dddot,
                         &jerk[0], &jerk[3]);
@@ -175,6 +177,12 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
             value[i] = v[r + (AK_VR_ALPHA_FIXED - AK_VR_OMEGA_FIXED)];
         } else {
             value[i] = jerk[r - AK_VR_ALPHA_FIXED];
+            if (jerk_assumed) {
+                ak_log(instance, AK_LOG_CALLS, fmi2OK,
+                       "fmi2GetRealOutputDerivatives: d(%s)/dt uses theta_dddot = 0 (no nonzero "
+                       "derivative of theta_ddot was given)",
+                       AK_VARIABLES[r].name);
+            }
         }
     }
     return fmi2OK;

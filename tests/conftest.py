@@ -76,7 +76,11 @@ class Instance:
     exchange) with a logger that keeps every message.
 
     ``call`` invokes an FMI function and returns its status without raising, so that tests can
-    check the status of calls that are meant to fail."""
+    check the status of calls that are meant to fail.
+
+    fmpy's native logger proxy keeps one logger: the messages of every instance reach the most
+    recently created instance's ``messages``. A test that checks messages creates the instance it
+    checks last."""
 
     def __init__(self, unzipdir, model_description, name="instance", logging_on=False,
                  fmi_type="CoSimulation"):

@@ -68,7 +68,7 @@ def test_derivatives_match_finite_differences_of_a_simulation(make_instance, rep
 
 @pytest.mark.parametrize("given", [False, True])
 def test_alpha_derivative_against_reference(given, make_instance):
-    instance = make_instance()
+    instance = make_instance(logging_on=True)
     instance.initialize(inputs=INPUTS)
     third = [0.7, -1.3, 2.2] if given else [0.0, 0.0, 0.0]
     if given:
@@ -77,7 +77,11 @@ def test_alpha_derivative_against_reference(given, make_instance):
     assert status == 0
     expected = reference.jerk(list(INPUTS.values()), third)
     assert np.allclose(got, expected, rtol=1e-14, atol=1e-14)
+    notes = [m for _, _, m in instance.messages if "uses theta_dddot = 0" in m]
+    assert len(notes) == (0 if given else 6)
     if not given:
+        assert notes[0] == ("fmi2GetRealOutputDerivatives: d(alpha_fixed[1])/dt uses theta_dddot = 0 "
+                            "(no nonzero derivative of theta_ddot was given)")
         # theta_dddot = 0 is what is assumed without it; a given one changes the answer.
         assert not np.allclose(got, reference.jerk(list(INPUTS.values()), [0.7, -1.3, 2.2]))
 
