@@ -1,8 +1,10 @@
 /* FMI 2.0 co-simulation stepping and status. The map from inputs to outputs is algebraic, so a
- * step only moves the time; the outputs follow the inputs held over the step. */
+ * step only moves the time and the inputs: held over the step, or moved along the polynomials
+ * given by fmi2SetRealInputDerivatives; the outputs at the end are those of the inputs there. */
 #include <math.h>
 
 #include "fmi2Functions.h"
+#include "fmi2_derivatives.h"
 #include "fmi2_instance.h"
 #include "fmi2_logging.h"
 #include "fmi2_state_machine.h"
@@ -17,7 +19,7 @@ static bool times_close(double a, double b) {
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
-    (void)noSetFMUStatePriorToCurrentPoint; /* nothing is kept for rollback */
+    (void)noSetFMUStatePriorToCurrentPoint; /* an FMU state is a copy: nothing to release */
     ak_instance *instance = c;
     if (!ak_call_allowed(instance, AK_FMI2_DO_STEP)) {
         return fmi2Error;
@@ -49,6 +51,9 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                "fmi2DoStep: the step from %.17g by communicationStepSize = %.17g ends at "
                "%.17g, past stopTime = %.17g",
                t, h, end, instance->stop_time);
+        return fmi2Error;
+    }
+    if (!ak_advance_inputs(instance, h)) {
         return fmi2Error;
     }
     ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2DoStep: from %.17g to %.17g", t, end);

@@ -18,7 +18,17 @@ void ak_instance_reset(ak_instance *instance) {
         instance->values[vr] = AK_VARIABLES[vr].start;
     }
     instance->outputs_stale = true;
+    ak_instance_clear_input_derivatives(instance);
     instance->evaluations = 0;
+}
+
+void ak_instance_clear_input_derivatives(ak_instance *instance) {
+    for (int k = 0; k < AK_N_INPUTS; k++) {
+        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+            instance->input_derivatives[k][n] = 0.0;
+        }
+    }
+    instance->any_input_derivative = false;
 }
 
 void ak_instance_update_outputs(ak_instance *instance) {

@@ -8,7 +8,9 @@
 #include "fmi2Functions.h"
 #include "model_variables.h"
 
-/* The FMI 2.0 co-simulation states, one bit each so that a set of them is a mask.
+/* The FMI 2.0 co-simulation and model-exchange states, one bit each so that a set of them is a
+ * mask. Instantiated, InitializationMode and Terminated are common to both interfaces; the
+ * Step* states are co-simulation's, EventMode and ContinuousTimeMode model exchange's.
  * StepInProgress and StepCanceled belong to asynchronous stepping, which this FMU does not
  * offer; they appear in the masks to keep the table the standard's. */
 typedef enum {
@@ -18,8 +20,14 @@ typedef enum {
     AK_STATE_STEP_IN_PROGRESS = 1 << 3,
     AK_STATE_STEP_FAILED = 1 << 4,
     AK_STATE_STEP_CANCELED = 1 << 5,
-    AK_STATE_TERMINATED = 1 << 6
+    AK_STATE_TERMINATED = 1 << 6,
+    AK_STATE_EVENT_MODE = 1 << 7,
+    AK_STATE_CONTINUOUS_TIME_MODE = 1 << 8
 } ak_state;
+
+/* Highest order of input derivative fmi2SetRealInputDerivatives accepts: the inputs follow a
+ * polynomial of this degree over a communication step. */
+#define AK_MAX_INPUT_DERIVATIVE_ORDER 2
 
 /* Log categories, in the order of <LogCategories> in modelDescription.xml. */
 typedef enum {
@@ -35,6 +43,7 @@ typedef struct {
     bool logging_on_at_instantiation;
     bool log_enabled[AK_N_LOG_CATEGORIES];
 
+    fmi2Type fmu_type; /* which interface the instance was created for */
     ak_state state;
     double time;
     bool stop_time_defined;
@@ -44,12 +53,21 @@ typedef struct {
     double values[AK_N_VARIABLES];
     /* True when an input changed since the outputs were last computed. */
     bool outputs_stale;
+    /* Co-simulation input derivatives: input_derivatives[k][n - 1] is the n-th time derivative
+     * of input k at the current time, as given by fmi2SetRealInputDerivatives; zero when not
+     * given. any_input_derivative is false when all are zero, which keeps fmi2SetReal and
+     * fmi2DoStep free of any extra work for masters that do not use them. */
+    double input_derivatives[AK_N_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
+    bool any_input_derivative;
     /* How many times the core ran; reported in the logCalls trace. */
     unsigned long evaluations;
 } ak_instance;
 
 /* Puts the instance in its just-instantiated condition (used by fmi2Instantiate and fmi2Reset). */
 void ak_instance_reset(ak_instance *instance);
+
+/* Forgets every input derivative (the inputs are then held constant over a step). */
+void ak_instance_clear_input_derivatives(ak_instance *instance);
 
 /* Brings the outputs up to date with the inputs, running the core only if an input changed. */
 void ak_instance_update_outputs(ak_instance *instance);

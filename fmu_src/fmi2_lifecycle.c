@@ -16,14 +16,6 @@ const char *fmi2GetVersion(void) {
     return fmi2Version;
 }
 
-static const char *fmu_type_name(fmi2Type fmu_type) {
-    switch (fmu_type) {
-    case fmi2ModelExchange: return "fmi2ModelExchange";
-    case fmi2CoSimulation: return "fmi2CoSimulation";
-    }
-    return "unknown";
-}
-
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
                               fmi2String fmuResourceLocation,
                               const fmi2CallbackFunctions *functions, fmi2Boolean visible,
@@ -44,11 +36,11 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                                "fmi2Instantiate: instanceName must be a non-empty string");
         return NULL;
     }
-    if (fmuType != fmi2CoSimulation) {
+    if (fmuType != fmi2CoSimulation && fmuType != fmi2ModelExchange) {
         ak_log_before_instance(functions, instanceName,
-                               "fmi2Instantiate: fmuType = %d (%s) is not supported; "
-                               "this FMU is for co-simulation (fmi2CoSimulation)",
-                               (int)fmuType, fmu_type_name(fmuType));
+                               "fmi2Instantiate: fmuType = %d is neither fmi2ModelExchange (0) "
+                               "nor fmi2CoSimulation (1)",
+                               (int)fmuType);
         return NULL;
     }
     if (fmuGUID == NULL || strcmp(fmuGUID, AK_GUID) != 0) {
@@ -77,6 +69,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     instance->functions = *functions;
     instance->instance_name = name;
     instance->logging_on_at_instantiation = loggingOn != fmi2False;
+    instance->fmu_type = fmuType;
     ak_instance_reset(instance);
     ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2Instantiate: instance \"%s\" created",
            instanceName);
@@ -173,7 +166,8 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
         return fmi2Error;
     }
     ak_instance_update_outputs(instance);
-    instance->state = AK_STATE_STEP_COMPLETE;
+    instance->state = instance->fmu_type == fmi2ModelExchange ? AK_STATE_EVENT_MODE
+                                                              : AK_STATE_STEP_COMPLETE;
     return fmi2OK;
 }
 

@@ -1,4 +1,6 @@
-/* The allowed-state table of the FMI 2.0 co-simulation state machine (FMI 2.0.4, section 4.2.4). */
+/* The allowed-state table of the FMI 2.0 state machines: co-simulation (FMI 2.0.4, section
+ * 4.2.4) and model exchange (section 3.2.3). An instance lives in one of the two machines, chosen
+ * by fmi2Instantiate's fmuType; the functions of the other interface are refused. */
 #include "fmi2_state_machine.h"
 
 #include "fmi2_logging.h"
@@ -11,55 +13,87 @@ enum {
     STEP_FAILED = AK_STATE_STEP_FAILED,
     STEP_CANCELED = AK_STATE_STEP_CANCELED,
     TERMINATED = AK_STATE_TERMINATED,
+    EVENT_MODE = AK_STATE_EVENT_MODE,
+    CONTINUOUS_TIME_MODE = AK_STATE_CONTINUOUS_TIME_MODE,
     ANY_STATE = INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE | STEP_IN_PROGRESS |
-                STEP_FAILED | STEP_CANCELED | TERMINATED,
+                STEP_FAILED | STEP_CANCELED | TERMINATED | EVENT_MODE | CONTINUOUS_TIME_MODE,
     /* Where the values of the variables can be read. */
-    READABLE = INITIALIZATION_MODE | STEP_COMPLETE | STEP_FAILED | STEP_CANCELED | TERMINATED,
-    /* Where inputs can be set. */
-    WRITABLE = INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE,
+    READABLE = INITIALIZATION_MODE | STEP_COMPLETE | STEP_FAILED | STEP_CANCELED | TERMINATED |
+               EVENT_MODE | CONTINUOUS_TIME_MODE,
+    /* Where inputs can be set (in ContinuousTimeMode only continuous inputs, which all are). */
+    WRITABLE = INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE | EVENT_MODE |
+               CONTINUOUS_TIME_MODE,
     /* Where the simulation status can be asked. */
     STATUS = STEP_COMPLETE | STEP_IN_PROGRESS | STEP_FAILED | STEP_CANCELED | TERMINATED,
     /* Where the FMU state can be got, set or serialized. */
-    FMU_STATE = ANY_STATE & ~STEP_IN_PROGRESS
+    FMU_STATE = ANY_STATE & ~STEP_IN_PROGRESS,
+    /* Where model exchange's event indicators and continuous states can be read. */
+    ME_READABLE = INITIALIZATION_MODE | EVENT_MODE | CONTINUOUS_TIME_MODE | TERMINATED
 };
+
+/* The interfaces a function belongs to. */
+enum { CS = 1 << 0, ME = 1 << 1, BOTH = CS | ME };
 
 static const struct {
     const char *name;
     unsigned int allowed_states;
+    unsigned int interfaces;
 } FUNCTIONS[AK_N_FMI2_FUNCTIONS] = {
-    [AK_FMI2_SET_DEBUG_LOGGING] = {"fmi2SetDebugLogging", ANY_STATE},
-    [AK_FMI2_FREE_INSTANCE] = {"fmi2FreeInstance", ANY_STATE & ~STEP_IN_PROGRESS},
-    [AK_FMI2_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", INSTANTIATED},
-    [AK_FMI2_ENTER_INITIALIZATION_MODE] = {"fmi2EnterInitializationMode", INSTANTIATED},
-    [AK_FMI2_EXIT_INITIALIZATION_MODE] = {"fmi2ExitInitializationMode", INITIALIZATION_MODE},
-    [AK_FMI2_TERMINATE] = {"fmi2Terminate", STEP_COMPLETE | STEP_FAILED | STEP_CANCELED},
-    [AK_FMI2_RESET] = {"fmi2Reset", ANY_STATE & ~STEP_IN_PROGRESS},
-    [AK_FMI2_GET_REAL] = {"fmi2GetReal", READABLE},
-    [AK_FMI2_GET_INTEGER] = {"fmi2GetInteger", READABLE},
-    [AK_FMI2_GET_BOOLEAN] = {"fmi2GetBoolean", READABLE},
-    [AK_FMI2_GET_STRING] = {"fmi2GetString", READABLE},
-    [AK_FMI2_SET_REAL] = {"fmi2SetReal", WRITABLE},
-    [AK_FMI2_SET_INTEGER] = {"fmi2SetInteger", WRITABLE},
-    [AK_FMI2_SET_BOOLEAN] = {"fmi2SetBoolean", WRITABLE},
-    [AK_FMI2_SET_STRING] = {"fmi2SetString", WRITABLE},
-    [AK_FMI2_GET_FMU_STATE] = {"fmi2GetFMUstate", FMU_STATE},
-    [AK_FMI2_SET_FMU_STATE] = {"fmi2SetFMUstate", FMU_STATE},
-    [AK_FMI2_FREE_FMU_STATE] = {"fmi2FreeFMUstate", FMU_STATE},
-    [AK_FMI2_SERIALIZED_FMU_STATE_SIZE] = {"fmi2SerializedFMUstateSize", FMU_STATE},
-    [AK_FMI2_SERIALIZE_FMU_STATE] = {"fmi2SerializeFMUstate", FMU_STATE},
-    [AK_FMI2_DE_SERIALIZE_FMU_STATE] = {"fmi2DeSerializeFMUstate", FMU_STATE},
-    [AK_FMI2_GET_DIRECTIONAL_DERIVATIVE] = {"fmi2GetDirectionalDerivative", READABLE},
-    [AK_FMI2_SET_REAL_INPUT_DERIVATIVES] = {"fmi2SetRealInputDerivatives", WRITABLE},
+    [AK_FMI2_SET_DEBUG_LOGGING] = {"fmi2SetDebugLogging", ANY_STATE, BOTH},
+    [AK_FMI2_FREE_INSTANCE] = {"fmi2FreeInstance", ANY_STATE & ~STEP_IN_PROGRESS, BOTH},
+    [AK_FMI2_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", INSTANTIATED, BOTH},
+    [AK_FMI2_ENTER_INITIALIZATION_MODE] = {"fmi2EnterInitializationMode", INSTANTIATED, BOTH},
+    [AK_FMI2_EXIT_INITIALIZATION_MODE] = {"fmi2ExitInitializationMode", INITIALIZATION_MODE,
+                                          BOTH},
+    [AK_FMI2_TERMINATE] = {"fmi2Terminate",
+                           STEP_COMPLETE | STEP_FAILED | STEP_CANCELED | EVENT_MODE |
+                               CONTINUOUS_TIME_MODE,
+                           BOTH},
+    [AK_FMI2_RESET] = {"fmi2Reset", ANY_STATE & ~STEP_IN_PROGRESS, BOTH},
+    [AK_FMI2_GET_REAL] = {"fmi2GetReal", READABLE, BOTH},
+    [AK_FMI2_GET_INTEGER] = {"fmi2GetInteger", READABLE, BOTH},
+    [AK_FMI2_GET_BOOLEAN] = {"fmi2GetBoolean", READABLE, BOTH},
+    [AK_FMI2_GET_STRING] = {"fmi2GetString", READABLE, BOTH},
+    [AK_FMI2_SET_REAL] = {"fmi2SetReal", WRITABLE, BOTH},
+    [AK_FMI2_SET_INTEGER] = {"fmi2SetInteger", WRITABLE, BOTH},
+    [AK_FMI2_SET_BOOLEAN] = {"fmi2SetBoolean", WRITABLE, BOTH},
+    [AK_FMI2_SET_STRING] = {"fmi2SetString", WRITABLE, BOTH},
+    [AK_FMI2_GET_FMU_STATE] = {"fmi2GetFMUstate", FMU_STATE, BOTH},
+    [AK_FMI2_SET_FMU_STATE] = {"fmi2SetFMUstate", FMU_STATE, BOTH},
+    [AK_FMI2_FREE_FMU_STATE] = {"fmi2FreeFMUstate", FMU_STATE, BOTH},
+    [AK_FMI2_SERIALIZED_FMU_STATE_SIZE] = {"fmi2SerializedFMUstateSize", FMU_STATE, BOTH},
+    [AK_FMI2_SERIALIZE_FMU_STATE] = {"fmi2SerializeFMUstate", FMU_STATE, BOTH},
+    [AK_FMI2_DE_SERIALIZE_FMU_STATE] = {"fmi2DeSerializeFMUstate", FMU_STATE, BOTH},
+    [AK_FMI2_GET_DIRECTIONAL_DERIVATIVE] = {"fmi2GetDirectionalDerivative", READABLE, BOTH},
+    [AK_FMI2_SET_REAL_INPUT_DERIVATIVES] = {"fmi2SetRealInputDerivatives",
+                                            INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE,
+                                            CS},
     [AK_FMI2_GET_REAL_OUTPUT_DERIVATIVES] = {"fmi2GetRealOutputDerivatives",
-                                            STEP_COMPLETE | STEP_FAILED | STEP_CANCELED |
-                                                TERMINATED},
-    [AK_FMI2_DO_STEP] = {"fmi2DoStep", STEP_COMPLETE},
-    [AK_FMI2_CANCEL_STEP] = {"fmi2CancelStep", STEP_IN_PROGRESS},
-    [AK_FMI2_GET_STATUS] = {"fmi2GetStatus", STATUS},
-    [AK_FMI2_GET_REAL_STATUS] = {"fmi2GetRealStatus", STATUS},
-    [AK_FMI2_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", STATUS},
-    [AK_FMI2_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", STATUS},
-    [AK_FMI2_GET_STRING_STATUS] = {"fmi2GetStringStatus", STATUS},
+                                             STEP_COMPLETE | STEP_FAILED | STEP_CANCELED |
+                                                 TERMINATED,
+                                             CS},
+    [AK_FMI2_DO_STEP] = {"fmi2DoStep", STEP_COMPLETE, CS},
+    [AK_FMI2_CANCEL_STEP] = {"fmi2CancelStep", STEP_IN_PROGRESS, CS},
+    [AK_FMI2_GET_STATUS] = {"fmi2GetStatus", STATUS, CS},
+    [AK_FMI2_GET_REAL_STATUS] = {"fmi2GetRealStatus", STATUS, CS},
+    [AK_FMI2_GET_INTEGER_STATUS] = {"fmi2GetIntegerStatus", STATUS, CS},
+    [AK_FMI2_GET_BOOLEAN_STATUS] = {"fmi2GetBooleanStatus", STATUS, CS},
+    [AK_FMI2_GET_STRING_STATUS] = {"fmi2GetStringStatus", STATUS, CS},
+    [AK_FMI2_ENTER_EVENT_MODE] = {"fmi2EnterEventMode", EVENT_MODE | CONTINUOUS_TIME_MODE, ME},
+    [AK_FMI2_NEW_DISCRETE_STATES] = {"fmi2NewDiscreteStates", EVENT_MODE, ME},
+    [AK_FMI2_ENTER_CONTINUOUS_TIME_MODE] = {"fmi2EnterContinuousTimeMode", EVENT_MODE, ME},
+    [AK_FMI2_COMPLETED_INTEGRATOR_STEP] = {"fmi2CompletedIntegratorStep", CONTINUOUS_TIME_MODE,
+                                           ME},
+    [AK_FMI2_SET_TIME] = {"fmi2SetTime", EVENT_MODE | CONTINUOUS_TIME_MODE, ME},
+    [AK_FMI2_SET_CONTINUOUS_STATES] = {"fmi2SetContinuousStates", CONTINUOUS_TIME_MODE, ME},
+    [AK_FMI2_GET_DERIVATIVES] = {"fmi2GetDerivatives",
+                                 EVENT_MODE | CONTINUOUS_TIME_MODE | TERMINATED, ME},
+    [AK_FMI2_GET_EVENT_INDICATORS] = {"fmi2GetEventIndicators", ME_READABLE, ME},
+    [AK_FMI2_GET_CONTINUOUS_STATES] = {"fmi2GetContinuousStates", ME_READABLE, ME},
+    [AK_FMI2_GET_NOMINALS_OF_CONTINUOUS_STATES] = {"fmi2GetNominalsOfContinuousStates",
+                                                   INSTANTIATED | EVENT_MODE |
+                                                       CONTINUOUS_TIME_MODE | TERMINATED,
+                                                   ME},
 };
 
 const char *ak_function_name(ak_function function) {
@@ -75,12 +109,23 @@ const char *ak_state_name(ak_state state) {
     case AK_STATE_STEP_FAILED: return "StepFailed";
     case AK_STATE_STEP_CANCELED: return "StepCanceled";
     case AK_STATE_TERMINATED: return "Terminated";
+    case AK_STATE_EVENT_MODE: return "EventMode";
+    case AK_STATE_CONTINUOUS_TIME_MODE: return "ContinuousTimeMode";
     }
     return "unknown";
 }
 
 bool ak_call_allowed(const ak_instance *instance, ak_function function) {
     if (instance == NULL) {
+        return false;
+    }
+    const unsigned int interface = instance->fmu_type == fmi2ModelExchange ? ME : CS;
+    if ((FUNCTIONS[function].interfaces & interface) == 0) {
+        ak_log(instance, AK_LOG_ERROR, fmi2Error,
+               "%s: a %s function, but this instance was created for %s",
+               FUNCTIONS[function].name, interface == ME ? "co-simulation" : "model-exchange",
+               interface == ME ? "model exchange (fmi2ModelExchange)"
+                               : "co-simulation (fmi2CoSimulation)");
         return false;
     }
     if ((FUNCTIONS[function].allowed_states & (unsigned int)instance->state) == 0) {

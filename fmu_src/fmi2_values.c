@@ -4,6 +4,7 @@
 #include <stdint.h>
 
 #include "fmi2Functions.h"
+#include "fmi2_derivatives.h"
 #include "fmi2_instance.h"
 #include "fmi2_logging.h"
 #include "fmi2_state_machine.h"
@@ -101,6 +102,9 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         if (instance->values[vr[i]] != value[i]) {
             instance->values[vr[i]] = value[i];
             instance->outputs_stale = true;
+        }
+        if (instance->any_input_derivative) {
+            ak_forget_input_derivatives(instance, vr[i]);
         }
     }
     return fmi2OK;

@@ -9,7 +9,7 @@ import sys
 import numpy as np
 import pytest
 from fmpy import extract, read_model_description
-from fmpy.fmi2 import (FMU2Slave, calloc, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
+from fmpy.fmi2 import (FMU2Model, FMU2Slave, calloc, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
                        fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, free)
 from fmpy.logging import addLoggerProxy
 
@@ -72,12 +72,18 @@ def c_table():
 
 
 class Instance:
-    """One FMU instance, created through fmpy's FMU2Slave with a logger that keeps every message.
+    """One FMU instance, created through fmpy's FMU2Slave (co-simulation) or FMU2Model (model
+    exchange) with a logger that keeps every message.
 
     ``call`` invokes an FMI function and returns its status without raising, so that tests can
-    check the status of calls that are meant to fail."""
+    check the status of calls that are meant to fail.
 
-    def __init__(self, unzipdir, model_description, name="instance", logging_on=False):
+    fmpy's native logger proxy keeps one logger: the messages of every instance reach the most
+    recently created instance's ``messages``. A test that checks messages creates the instance it
+    checks last."""
+
+    def __init__(self, unzipdir, model_description, name="instance", logging_on=False,
+                 fmi_type="CoSimulation"):
         self.model_description = model_description
         self.vr = {v.name: v.valueReference for v in model_description.modelVariables}
         self.messages = []  # (status name, category, message)
@@ -87,9 +93,11 @@ class Instance:
         self.callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
         self.callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
         addLoggerProxy(ctypes.byref(self.callbacks))
-        self.fmu = FMU2Slave(guid=model_description.guid, unzipDirectory=unzipdir,
-                             modelIdentifier=model_description.coSimulation.modelIdentifier,
-                             instanceName=name)
+        fmu_class, interface = ((FMU2Model, model_description.modelExchange)
+                                if fmi_type == "ModelExchange"
+                                else (FMU2Slave, model_description.coSimulation))
+        self.fmu = fmu_class(guid=model_description.guid, unzipDirectory=unzipdir,
+                             modelIdentifier=interface.modelIdentifier, instanceName=name)
         self.fmu.instantiate(callbacks=self.callbacks, loggingOn=logging_on)
         self.component = self.fmu.component
 
@@ -132,8 +140,9 @@ def make_instance(unzipdir, model_description):
     """Creates instances, all freed at the end of the test."""
     created = []
 
-    def make(name="instance", logging_on=False):
-        instance = Instance(unzipdir, model_description, name=name, logging_on=logging_on)
+    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
+        instance = Instance(unzipdir, model_description, name=name, logging_on=logging_on,
+                            fmi_type=fmi_type)
         created.append(instance)
         return instance
 

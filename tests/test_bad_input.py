@@ -118,12 +118,15 @@ def test_wrong_guid(guid, make_instance):
                          '"{c3391885-ba93-4824-bb36-df39703b63ee}" of this FMU\'s binary')]
 
 
-def test_model_exchange_type_is_refused(make_instance):
-    _, component, messages = instantiate_raw(make_instance, fmu_type=0)
+@pytest.mark.parametrize("fmu_type", [2, -1])
+def test_unknown_fmu_type_is_refused(fmu_type, make_instance):
+    """Both fmi2ModelExchange (0) and fmi2CoSimulation (1) are accepted (test_model_exchange.py);
+    anything else is not."""
+    _, component, messages = instantiate_raw(make_instance, fmu_type=fmu_type)
     assert component is None
     assert messages == [("Error", "logStatusError",
-                         "fmi2Instantiate: fmuType = 0 (fmi2ModelExchange) is not supported; "
-                         "this FMU is for co-simulation (fmi2CoSimulation)")]
+                         f"fmi2Instantiate: fmuType = {fmu_type} is neither fmi2ModelExchange (0) "
+                         "nor fmi2CoSimulation (1)")]
 
 
 @pytest.mark.parametrize("name", [b"", None])

@@ -291,25 +291,16 @@ def test_set_debug_logging_rejects_unknown_category(make_instance):
     assert instance.call("fmi2SetDebugLogging", 1, 1, None) == 3
 
 
-# --- Capabilities this FMU does not claim --------------------------------------------------------
+# --- What this FMU does not offer ---------------------------------------------------------------
+# Every capability flag of modelDescription.xml is true and tested in its own file
+# (test_model_exchange.py, test_input_interpolation.py, test_output_derivatives.py,
+# test_directional_derivatives.py, test_fmu_state.py, test_variable_steps.py). Asynchronous
+# stepping (canRunAsynchronuously="false") stays unsupported: no step is ever in progress.
 
-REFUSED = [
-    ("fmi2GetFMUstate", (ctypes.byref(ctypes.c_void_p()),), 'canGetAndSetFMUstate="false"'),
-    ("fmi2SetFMUstate", (None,), 'canGetAndSetFMUstate="false"'),
-    ("fmi2FreeFMUstate", (ctypes.byref(ctypes.c_void_p()),), 'canGetAndSetFMUstate="false"'),
-    ("fmi2SerializedFMUstateSize", (None, ctypes.byref(ctypes.c_size_t())), 'canSerializeFMUstate="false"'),
-    ("fmi2SerializeFMUstate", (None, None, 0), 'canSerializeFMUstate="false"'),
-    ("fmi2DeSerializeFMUstate", (None, 0, ctypes.byref(ctypes.c_void_p())), 'canSerializeFMUstate="false"'),
-    ("fmi2GetDirectionalDerivative", (None, 0, None, 0, None, None), 'providesDirectionalDerivative="false"'),
-    ("fmi2SetRealInputDerivatives", (None, 0, None, None), 'canInterpolateInputs="false"'),
-    ("fmi2GetRealOutputDerivatives", (None, 0, None, None), 'maxOutputDerivativeOrder="0"'),
-]
-
-
-@pytest.mark.parametrize("function,args,flag", REFUSED)
-def test_functions_behind_false_flags_refuse(function, args, flag, make_instance):
+def test_cancel_step_is_refused_because_steps_are_never_asynchronous(make_instance):
     instance = make_instance()
-    instance.initialize()
-    instance.fmu.doStep(0.0, 0.1)
-    assert instance.call(function, *args) == 3
-    assert instance.errors() == [f"{function}: not supported by this FMU ({flag} in modelDescription.xml)"]
+    instance.initialize(inputs=INPUTS)
+    assert instance.call("fmi2DoStep", 0.0, 0.1, 1) == 0
+    assert instance.call("fmi2CancelStep") == 3
+    assert instance.errors() == ["fmi2CancelStep: illegal call in state StepComplete"]
+    assert instance.call("fmi2DoStep", 0.1, 0.1, 1) == 0  # nothing was disturbed

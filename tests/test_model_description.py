@@ -89,16 +89,26 @@ def test_default_experiment(model_description):
 
 
 def test_capability_flags(model_description):
-    """Only what works and is tested is claimed; the refusals are tested in test_fmi_calls.py."""
+    """Each flag is claimed because a test shows it works (docs/capabilities.md lists them)."""
     cs = model_description.coSimulation
-    assert cs.canHandleVariableCommunicationStepSize is True
-    assert cs.canBeInstantiatedOnlyOncePerProcess is False
-    assert cs.canInterpolateInputs is False
-    assert cs.maxOutputDerivativeOrder == 0
-    assert cs.canGetAndSetFMUstate is False
-    assert cs.canSerializeFMUstate is False
-    assert cs.providesDirectionalDerivative is False
-    assert model_description.modelExchange is None
+    assert cs.canHandleVariableCommunicationStepSize is True  # test_variable_steps.py
+    assert cs.canBeInstantiatedOnlyOncePerProcess is False  # test_fmi_calls.py (two instances)
+    assert cs.canInterpolateInputs is True  # test_input_interpolation.py
+    assert cs.maxOutputDerivativeOrder == 1  # test_output_derivatives.py
+    assert cs.canRunAsynchronuously is False  # test_fmi_calls.py (fmi2CancelStep refused)
+    me = model_description.modelExchange
+    assert me is not None  # test_model_exchange.py
+    assert me.modelIdentifier == cs.modelIdentifier
+    assert me.needsCompletedIntegratorStep is False
+    assert model_description.numberOfContinuousStates == 0
+    assert model_description.numberOfEventIndicators == 0
+    assert model_description.derivatives == []
+    for interface in (cs, me):
+        assert interface.canGetAndSetFMUstate is True  # test_fmu_state.py
+        assert interface.canSerializeFMUstate is True  # test_fmu_state.py
+        assert interface.providesDirectionalDerivative is True  # test_directional_derivatives.py
+        assert interface.canBeInstantiatedOnlyOncePerProcess is False
+        assert interface.canNotUseMemoryManagementFunctions is False
 
 
 def test_log_categories(model_description):

@@ -1,0 +1,273 @@
+"""FMU state: get, set, free, serialize, deserialize. The serialized form is self-contained (fixed
+little-endian layout, format version, GUID, CRC-32); corrupt, truncated and foreign bytes are
+refused with fmi2Error and a clear message, leaving the instance as it was."""
+import ctypes
+import struct
+import zlib
+
+import numpy as np
+import pytest
+from fmpy.fmi2 import fmi2FMUstate
+
+import reference
+
+INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
+OTHER = dict(zip(reference.INPUT_NAMES, [-1.0, 1.5, 0.2, 4.0, 0.1, -0.3, 0.0, 9.0, -2.0]))
+ALL = reference.INPUT_NAMES + reference.OUTPUT_NAMES
+SIZE = 404
+GUID = b"{c3391885-ba93-4824-bb36-df39703b63ee}"
+
+
+def set_derivatives(instance, derivatives):
+    """fmi2SetRealInputDerivatives of order 1 for the named inputs."""
+    names = list(derivatives)
+    vr = (ctypes.c_uint * len(names))(*[instance.vr[n] for n in names])
+    order = (ctypes.c_int * len(names))(*([1] * len(names)))
+    value = (ctypes.c_double * len(names))(*derivatives.values())
+    return instance.call("fmi2SetRealInputDerivatives", vr, len(names), order, value)
+
+
+def snapshot(instance):
+    """Everything observable of a co-simulation instance."""
+    return (instance.fmu.getRealStatus(2), tuple(instance.get(ALL)))
+
+
+def stepping(instance, t, steps, h=0.05):
+    """Steps and records the outputs after each step."""
+    rows = []
+    for _ in range(steps):
+        assert instance.call("fmi2DoStep", t, h, 1) == 0
+        t += h
+        rows.append(instance.get(ALL))
+    return np.array(rows)
+
+
+def running(make_instance, name="running"):
+    instance = make_instance(name)
+    instance.initialize(inputs=INPUTS, stop_time=10.0)
+    set_derivatives(instance, {"theta[1]": 0.5, "theta_dot[2]": -1.0, "theta_ddot[3]": 2.0})
+    stepping(instance, 0.0, 4)
+    return instance
+
+
+def reseal(data):
+    """A byte string with its CRC-32 recomputed, to forge well-sealed but wrong contents."""
+    data = bytearray(data[:SIZE - 4])
+    return bytes(data) + struct.pack("<I", zlib.crc32(data))
+
+
+def test_rollback_restores_time_values_and_input_derivatives(make_instance):
+    instance = running(make_instance)
+    before = snapshot(instance)
+    state = instance.fmu.getFMUstate()
+    future = stepping(instance, 0.2, 5)
+    instance.set(OTHER)  # also forgets the derivatives of every input
+    stepping(instance, 0.45, 2)
+    instance.fmu.setFMUstate(state)
+    assert snapshot(instance) == before
+    # The input derivatives came back too: the same steps give the same outputs, bit for bit.
+    assert np.array_equal(stepping(instance, 0.2, 5), future)
+    instance.fmu.freeFMUstate(state)
+    assert state.value is None
+
+
+def test_round_trip_across_two_instances(make_instance):
+    first = running(make_instance, "first")
+    data = first.fmu.serializeFMUstate(first.fmu.getFMUstate())
+    assert len(data) == SIZE
+    second = make_instance("second")  # just instantiated, never initialized
+    state = second.fmu.deSerializeFMUstate(data)
+    second.fmu.setFMUstate(state)
+    assert snapshot(second) == snapshot(first)
+    assert np.array_equal(stepping(second, 0.2, 6), stepping(first, 0.2, 6))
+    # The second instance serializes to the same bytes as the first at the same point.
+    assert second.fmu.serializeFMUstate(second.fmu.getFMUstate()) == \
+        first.fmu.serializeFMUstate(first.fmu.getFMUstate())
+    assert first.errors() == [] and second.errors() == []
+
+
+def test_layout_is_the_documented_one(make_instance):
+    instance = running(make_instance)
+    data = instance.fmu.serializeFMUstate(instance.fmu.getFMUstate())
+    assert data[0:8] == b"AKinFMUs"
+    assert struct.unpack_from("<II", data, 8) == (1, SIZE)
+    assert data[16:56] == GUID + b"\0\0"
+    assert struct.unpack_from("<II", data, 56) == (1, 1 << 2)  # co-simulation, StepComplete
+    assert struct.unpack_from("<ddII", data, 64) == (0.2, 10.0, 1, 0)
+    values = struct.unpack_from("<21d", data, 88)
+    assert np.array_equal(values, instance.get(ALL))
+    derivatives = np.array(struct.unpack_from("<18d", data, 256)).reshape(9, 2)
+    assert derivatives[0, 0] == 0.5 and derivatives[4, 0] == -1.0 and derivatives[8, 0] == 2.0
+    assert np.count_nonzero(derivatives) == 3
+    assert struct.unpack_from("<I", data, 400)[0] == zlib.crc32(data[:400])  # IEEE CRC-32
+
+
+def test_state_objects_are_reused_when_passed_back(make_instance):
+    instance = running(make_instance)
+    state = fmi2FMUstate()
+    assert instance.call("fmi2GetFMUstate", ctypes.byref(state)) == 0
+    first = state.value
+    stepping(instance, 0.2, 1)
+    assert instance.call("fmi2GetFMUstate", ctypes.byref(state)) == 0
+    assert state.value == first  # overwritten in place, not reallocated
+    data = instance.fmu.serializeFMUstate(state)
+    assert struct.unpack_from("<d", data, 64)[0] == 0.25
+    assert instance.fmu.deSerializeFMUstate(data, state).value == first
+    assert instance.call("fmi2FreeFMUstate", ctypes.byref(state)) == 0
+    assert state.value is None
+    assert instance.call("fmi2FreeFMUstate", ctypes.byref(state)) == 0  # freeing NULL: nothing
+    assert instance.errors() == []
+
+
+def test_setting_a_state_restores_the_state_machine(make_instance):
+    instance = running(make_instance)
+    state = instance.fmu.getFMUstate()
+    instance.fmu.terminate()
+    assert instance.call("fmi2DoStep", 0.2, 0.1, 1) == 3
+    instance.fmu.setFMUstate(state)  # back in StepComplete at t = 0.2
+    assert instance.call("fmi2DoStep", 0.2, 0.1, 1) == 0
+
+
+def test_model_exchange_state_round_trip(make_instance):
+    # fmpy's native logger proxy delivers every message to the most recently created instance's
+    # logger: the co-simulation source is made first so that the instance under test is last.
+    cs = running(make_instance, "cs")
+    cs_data = cs.fmu.serializeFMUstate(cs.fmu.getFMUstate())
+    instance = make_instance(fmi_type="ModelExchange")
+    instance.initialize(inputs=INPUTS)
+    instance.fmu.enterContinuousTimeMode()
+    instance.fmu.setTime(0.75)
+    state = instance.fmu.getFMUstate()
+    data = instance.fmu.serializeFMUstate(state)
+    assert struct.unpack_from("<II", data, 56) == (0, 1 << 8)  # model exchange, ContinuousTimeMode
+    instance.fmu.enterEventMode()
+    instance.set(OTHER)
+    instance.fmu.setFMUstate(instance.fmu.deSerializeFMUstate(data))
+    assert np.array_equal(instance.get(reference.INPUT_NAMES), list(INPUTS.values()))
+    assert np.allclose(instance.get(reference.OUTPUT_NAMES), reference.outputs(list(INPUTS.values())),
+                       rtol=1e-14)
+    assert instance.call("fmi2CompletedIntegratorStep", 1, ctypes.byref(ctypes.c_int()),
+                         ctypes.byref(ctypes.c_int())) == 0  # ContinuousTimeMode again
+    # A co-simulation state does not fit a model-exchange instance.
+    assert try_deserialize(instance, cs_data) == 3
+    assert instance.errors()[-1] == ("fmi2DeSerializeFMUstate: the FMU state is of a co-simulation "
+                                     "instance (fmuType 1); this instance is for model exchange")
+
+
+def try_deserialize(instance, data, state=None):
+    state = fmi2FMUstate() if state is None else state
+    buffer = ctypes.create_string_buffer(data, max(len(data), 1))
+    return instance.call("fmi2DeSerializeFMUstate", buffer, len(data), ctypes.byref(state))
+
+
+def good_bytes(make_instance):
+    source = running(make_instance, "source")
+    return source.fmu.serializeFMUstate(source.fmu.getFMUstate())
+
+
+def forged(data, offset, fmt, value):
+    data = bytearray(data)
+    struct.pack_into(fmt, data, offset, value)
+    return reseal(data)
+
+
+def bad_strings(data):
+    flipped = bytearray(data)
+    flipped[100] ^= 0x01  # one bit of theta_dot in the payload
+    return {
+        "empty": (b"", "fmi2DeSerializeFMUstate: the 0 bytes are not an AngularKinematics FMU state "
+                       "(too short for the header)"),
+        "header only": (data[:12], "fmi2DeSerializeFMUstate: the 12 bytes are not an AngularKinematics "
+                                   "FMU state (too short for the header)"),
+        "truncated": (data[:-1], "fmi2DeSerializeFMUstate: the FMU state is 403 bytes long and declares "
+                                 "404 bytes; format version 1 has 404 bytes (truncated or extended)"),
+        "extended": (data + b"\0", "fmi2DeSerializeFMUstate: the FMU state is 405 bytes long and "
+                                   "declares 404 bytes; format version 1 has 404 bytes (truncated or "
+                                   "extended)"),
+        "foreign": (b"PK\x03\x04" + bytes(400), "fmi2DeSerializeFMUstate: the 404 bytes are not an "
+                                                "AngularKinematics FMU state (wrong magic bytes)"),
+        "corrupt": (bytes(flipped), "fmi2DeSerializeFMUstate: the FMU state is corrupt: its CRC-32 is "
+                                    "0x%08x, the bytes give 0x%08x" % (
+                                        struct.unpack_from("<I", data, 400)[0],
+                                        zlib.crc32(bytes(flipped[:400])))),
+        "version 2": (forged(data, 8, "<I", 2), "fmi2DeSerializeFMUstate: FMU state format version 2 "
+                                                "is not supported (this binary reads version 1)"),
+        "other GUID": (reseal(data[:16] + b"{00000000-0000-0000-0000-000000000000}\0\0" + data[56:]),
+                       'fmi2DeSerializeFMUstate: the FMU state is of an FMU with GUID '
+                       '"{00000000-0000-0000-0000-000000000000}", not this one\'s '
+                       '"{c3391885-ba93-4824-bb36-df39703b63ee}"'),
+        "step in progress": (forged(data, 60, "<I", 1 << 3),
+                             "fmi2DeSerializeFMUstate: the FMU state holds an impossible header "
+                             "(state 0x8, time 0.2, stop time 10, stop time defined 1)"),
+        "not finite": (forged(data, 88 + 8 * 4, "<d", float("inf")),
+                       "fmi2DeSerializeFMUstate: the FMU state holds theta_dot[2] = inf, which is "
+                       "not finite"),
+    }
+
+
+@pytest.mark.parametrize("kind", ["empty", "header only", "truncated", "extended", "foreign", "corrupt",
+                                  "version 2", "other GUID", "step in progress", "not finite"])
+def test_bad_bytes_are_refused_and_change_nothing(kind, make_instance):
+    data = good_bytes(make_instance)
+    bad, message = bad_strings(data)[kind]
+    instance = running(make_instance, "target")
+    stepping(instance, 0.2, 1)
+    before = snapshot(instance)
+    # A state object passed for reuse is left as it was too.
+    kept = instance.fmu.getFMUstate()
+    kept_bytes = instance.fmu.serializeFMUstate(kept)
+    assert try_deserialize(instance, bad, kept) == 3
+    assert instance.errors() == [message]
+    assert snapshot(instance) == before
+    assert instance.fmu.serializeFMUstate(kept) == kept_bytes
+    assert instance.call("fmi2DoStep", 0.25, 0.05, 1) == 0  # and goes on
+
+
+def test_every_single_bit_flip_is_detected(make_instance):
+    data = good_bytes(make_instance)
+    instance = make_instance("target")
+    refused = 0
+    for byte in range(SIZE):
+        for bit in range(8):
+            bad = bytearray(data)
+            bad[byte] ^= 1 << bit
+            refused += try_deserialize(instance, bytes(bad)) == 3
+    assert refused == SIZE * 8
+    assert try_deserialize(instance, data) == 0
+
+
+def test_null_and_stray_arguments(make_instance):
+    instance = running(make_instance)
+    stray = ctypes.c_void_p(ctypes.addressof(ctypes.create_string_buffer(512)))
+    size = ctypes.c_size_t()
+    assert instance.call("fmi2GetFMUstate", None) == 3
+    assert instance.call("fmi2SetFMUstate", None) == 3
+    assert instance.call("fmi2SetFMUstate", stray) == 3
+    assert instance.call("fmi2SerializedFMUstateSize", instance.fmu.getFMUstate(), None) == 3
+    small = ctypes.create_string_buffer(SIZE - 1)
+    assert instance.call("fmi2SerializeFMUstate", instance.fmu.getFMUstate(), small, SIZE - 1) == 3
+    assert instance.call("fmi2FreeFMUstate", None) == 3
+    assert instance.errors() == [
+        "fmi2GetFMUstate: FMUstate is NULL",
+        "fmi2SetFMUstate: FMUstate NULL is not an FMU state made by fmi2GetFMUstate or "
+        "fmi2DeSerializeFMUstate of this FMU (or it was freed)",
+        "fmi2SetFMUstate: FMUstate given is not an FMU state made by fmi2GetFMUstate or "
+        "fmi2DeSerializeFMUstate of this FMU (or it was freed)",
+        "fmi2SerializedFMUstateSize: size is NULL",
+        "fmi2SerializeFMUstate: size = 403 is too small; the state needs 404 bytes "
+        "(fmi2SerializedFMUstateSize)",
+        "fmi2FreeFMUstate: FMUstate is NULL",
+    ]
+    assert instance.call("fmi2SerializedFMUstateSize", instance.fmu.getFMUstate(),
+                         ctypes.byref(size)) == 0
+    assert size.value == SIZE
+
+
+def test_many_get_free_cycles(make_instance):
+    instance = running(make_instance)
+    for _ in range(500):
+        state = instance.fmu.getFMUstate()
+        copy = instance.fmu.deSerializeFMUstate(instance.fmu.serializeFMUstate(state))
+        instance.fmu.freeFMUstate(state)
+        instance.fmu.freeFMUstate(copy)
+    assert instance.errors() == []
