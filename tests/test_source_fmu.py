@@ -20,13 +20,10 @@ FMI_HEADERS = {"fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"}
 
 
 def cmake_fmu_sources():
-    """The one list in CMakeLists.txt (AK_CORE_SOURCES and AK_FMI_SOURCES), as file names."""
-    text = (ROOT / "CMakeLists.txt").read_text()
-    names = []
-    for variable in ("AK_CORE_SOURCES", "AK_FMI_SOURCES"):
-        body = text.split(f"set({variable}", 1)[1].split(")", 1)[0]
-        names += [pathlib.PurePath(item).name for item in body.split()]
-    return names
+    """The one list of CMakeLists.txt (AK_FMU_SOURCES), as file names, written by CMake at configure."""
+    listing = ROOT / "build" / "fmu_sources.txt"
+    assert listing.is_file(), f"{listing} is missing: build first (bash scripts/build.sh)"
+    return listing.read_text().split()
 
 
 @pytest.fixture(scope="module")
