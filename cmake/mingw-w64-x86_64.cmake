@@ -4,7 +4,10 @@ set(CMAKE_SYSTEM_NAME Windows)
 set(CMAKE_SYSTEM_PROCESSOR x86_64)
 
 set(AK_MINGW_PREFIX x86_64-w64-mingw32)
-find_program(CMAKE_C_COMPILER NAMES ${AK_MINGW_PREFIX}-gcc-win32 ${AK_MINGW_PREFIX}-gcc REQUIRED)
+find_program(CMAKE_C_COMPILER NAMES ${AK_MINGW_PREFIX}-gcc-win32 ${AK_MINGW_PREFIX}-gcc)
+if(NOT CMAKE_C_COMPILER)
+  message(FATAL_ERROR "No ${AK_MINGW_PREFIX}-gcc: install mingw-w64 (Debian: gcc-mingw-w64-x86-64-win32)")
+endif()
 find_program(CMAKE_RC_COMPILER NAMES ${AK_MINGW_PREFIX}-windres)
 set(CMAKE_FIND_ROOT_PATH /usr/${AK_MINGW_PREFIX})
 
