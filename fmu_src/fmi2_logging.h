@@ -6,7 +6,10 @@
 
 #include "fmi2_instance.h"
 
-#if defined(__GNUC__)
+#if defined(__MINGW32__)
+/* mingw-w64 builds use its C99 printf (__USE_MINGW_ANSI_STDIO=1, set by CMakeLists.txt), not msvcrt's. */
+#define AK_PRINTF_FORMAT(f, a) __attribute__((format(gnu_printf, f, a)))
+#elif defined(__GNUC__)
 #define AK_PRINTF_FORMAT(f, a) __attribute__((format(printf, f, a)))
 #else
 #define AK_PRINTF_FORMAT(f, a)

@@ -1,10 +1,22 @@
 #!/usr/bin/env bash
-# Builds the FMU into dist/AngularKinematics.fmu (and the test tools) in build/.
+# Builds dist/AngularKinematics.fmu (and the test tools) in build/: first the Windows x86-64 binary,
+# cross-compiled with mingw-w64 in build-win64/ (cmake/mingw-w64-x86_64.cmake), then the Linux
+# binary, packaged together with the Windows one, the sources and the documentation.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-mkdir -p build
-if ! cmake -S . -B build -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >build/configure.log 2>&1; then
-  cat build/configure.log
-  exit 1
-fi
+python="$PWD/.venv/bin/python"
+
+configure() {  # configure BUILD_DIR [CMAKE_OPTIONS...]: quiet unless it fails
+  local dir=$1
+  shift
+  mkdir -p "$dir"
+  if ! cmake -S . -B "$dir" -DPython3_EXECUTABLE="$python" "$@" >"$dir/configure.log" 2>&1; then
+    cat "$dir/configure.log"
+    exit 1
+  fi
+}
+
+configure build-win64 -DCMAKE_TOOLCHAIN_FILE=cmake/mingw-w64-x86_64.cmake -DAK_PACKAGE_FMU=OFF
+cmake --build build-win64 --parallel 2
+configure build -DAK_EXTRA_PLATFORM_BINARIES="$PWD/build-win64/fmu/binaries/win64/AngularKinematics.dll"
 cmake --build build --parallel 2

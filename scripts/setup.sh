@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Prepares a machine for building and testing: C toolchain and CMake (from Debian's packages if
-# missing), and a Python virtual environment .venv with the pinned packages of requirements.txt.
+# Prepares a machine for building and testing: C toolchain, CMake and mingw-w64 for the Windows
+# binary (from Debian's packages if missing; with --with-wine also wine, to test that binary), and a
+# Python virtual environment .venv with the pinned packages of requirements.txt.
 # Idempotent: a second run installs nothing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,10 +10,16 @@ missing=()
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)
 command -v cc >/dev/null 2>&1 || missing+=(gcc libc6-dev)
 command -v python3 >/dev/null 2>&1 || missing+=(python3 python3-venv)
+# The Windows binary is cross-compiled with mingw-w64; the tests run it under wine (--with-wine).
+command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-x86-64-win32)
+if [ "${1:-}" = "--with-wine" ]; then
+  command -v wine64 >/dev/null 2>&1 || command -v wine >/dev/null 2>&1 ||
+    [ -x /usr/lib/wine/wine64 ] || missing+=(wine64)
+fi
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]} from Debian's packages"
   apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
 stamp=.venv/.requirements-installed

@@ -3,7 +3,7 @@
 # through fmpy (pytest).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh --with-wine
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure
 .venv/bin/python -m pytest tests "$@"

@@ -16,8 +16,13 @@ def test_fmu_archive_holds_description_binary_and_documentation(fmu_path, root):
     with zipfile.ZipFile(fmu_path) as archive:
         names = set(archive.namelist())
         packaged = archive.read("modelDescription.xml")
-    assert {"modelDescription.xml", "binaries/linux64/AngularKinematics.so",
-            "documentation/index.html"} <= names
+    assert {"modelDescription.xml", "model.png", "binaries/linux64/AngularKinematics.so",
+            "binaries/win64/AngularKinematics.dll", "documentation/index.html",
+            "sources/buildDescription.xml"} <= names
+    assert {n for n in names if n.startswith("sources/") and n.endswith(".c")} == \
+        {f"sources/{p.name}" for p in (root / "fmu_src").glob("*.c")}
+    with zipfile.ZipFile(fmu_path) as archive:
+        assert archive.read("model.png") == (root / "model.png").read_bytes()
     assert packaged == (root / "modelDescription.xml").read_bytes(), \
         "the packaged modelDescription.xml is not the repository's"
 
