@@ -51,7 +51,9 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                t, h, end, instance->stop_time);
         return fmi2Error;
     }
-    ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2DoStep: from %.17g to %.17g", t, end);
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2DoStep: from %.17g to %.17g", t, end);
+    }
     instance->time = end;
     return fmi2OK;
 }

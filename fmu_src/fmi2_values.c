@@ -95,8 +95,10 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         }
     }
     for (size_t i = 0; i < nvr; i++) {
-        ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2SetReal: %s = %.17g",
-               AK_VARIABLES[vr[i]].name, value[i]);
+        if (ak_log_on(instance, AK_LOG_CALLS)) {
+            ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2SetReal: %s = %.17g",
+                   AK_VARIABLES[vr[i]].name, value[i]);
+        }
         /* Only a real change makes the outputs stale: masters often set unchanged inputs. */
         if (instance->values[vr[i]] != value[i]) {
             instance->values[vr[i]] = value[i];
