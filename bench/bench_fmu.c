@@ -304,6 +304,39 @@ static double time_get_unchanged(fmu_api *api, long n) {
     return elapsed / (double)n;
 }
 
+/* n calls of fmi2SetReal of the 9 inputs to new values, nothing else: ns per set. */
+static double time_set_only(fmu_api *api, long n) {
+    instance fmu;
+    start_instance(api, &fmu);
+    int statuses = fmi2OK;
+    const double start = now_ns();
+    for (long call = 0; call < n; call++) {
+        statuses |= api->set_real(fmu.component, INPUT_VRS, N_INPUTS,
+                                  input_table[call & (TABLE_ROWS - 1)]);
+    }
+    const double elapsed = now_ns() - start;
+    check_ok((fmi2Status)statuses, "a set of the timed loop");
+    stop_instance(&fmu);
+    return elapsed / (double)n;
+}
+
+/* n calls of fmi2DoStep, nothing else: ns per step. */
+static double time_step_only(fmu_api *api, long n) {
+    instance fmu;
+    start_instance(api, &fmu);
+    int statuses = fmi2OK;
+    double t = fmu.time;
+    const double start = now_ns();
+    for (long call = 0; call < n; call++) {
+        statuses |= api->do_step(fmu.component, t, STEP_SIZE, fmi2True);
+        t += STEP_SIZE;
+    }
+    const double elapsed = now_ns() - start;
+    check_ok((fmi2Status)statuses, "a step of the timed loop");
+    stop_instance(&fmu);
+    return elapsed / (double)n;
+}
+
 /* n times: set input `input` to a new value, then get all outputs: ns per set + get. */
 static double time_single_change(fmu_api *api, int input, long n) {
     instance fmu;
@@ -475,19 +508,27 @@ static void run_scaling(fmu_api *api, const options *o) {
 }
 
 static void run_gets(fmu_api *api, const options *o) {
-    double core[MAX_REPEATS], get[MAX_REPEATS];
+    double core[MAX_REPEATS], get[MAX_REPEATS], set[MAX_REPEATS], step[MAX_REPEATS];
     for (int r = 0; r < o->repeats; r++) {
         core[r] = time_core(o->calls);
         get[r] = time_get_unchanged(api, o->calls);
+        set[r] = time_set_only(api, o->calls);
+        step[r] = time_step_only(api, o->calls);
     }
     const double core_median = median(core, o->repeats);
-    printf("\nfmi2GetReal of the 12 outputs, %ld calls per repeat, %d repeats (median); the FMU's\n"
-           "evaluation count is checked unchanged after each loop:\n\n",
+    printf("\nSingle calls, %ld per repeat, %d repeats (median); after the get loop the FMU's\n"
+           "evaluation count is checked unchanged:\n\n",
            o->calls, o->repeats);
     printf("| call | ns/call | / core |\n|---|---:|---:|\n");
     printf("| bare core (for scale) | %.1f | 1.00 |\n", core_median);
     const double get_median = median(get, o->repeats);
-    printf("| get, no input changed | %.1f | %.2f |\n", get_median, get_median / core_median);
+    printf("| fmi2GetReal of 12 outputs, no input changed | %.1f | %.2f |\n", get_median,
+           get_median / core_median);
+    const double set_median = median(set, o->repeats);
+    printf("| fmi2SetReal of 9 inputs, new values (no get) | %.1f | %.2f |\n", set_median,
+           set_median / core_median);
+    const double step_median = median(step, o->repeats);
+    printf("| fmi2DoStep alone | %.1f | %.2f |\n", step_median, step_median / core_median);
 
     printf("\nfmi2SetReal of ONE input to a new value, then fmi2GetReal of the 12 outputs (one\n"
            "evaluation each, checked by count), %ld calls per repeat:\n\n",

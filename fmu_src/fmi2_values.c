@@ -77,6 +77,11 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
+        /* Inputs have the value references below AK_N_INPUTS (model_variables.h): a finite value
+         * for one of them, the usual case, needs no further check. */
+        if (vr[i] < AK_N_INPUTS && isfinite(value[i])) {
+            continue;
+        }
         if (!known_value_reference(instance, AK_FMI2_SET_REAL, vr[i], i)) {
             return fmi2Error;
         }
@@ -94,8 +99,9 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
             return fmi2Error;
         }
     }
+    const bool trace = ak_log_on(instance, AK_LOG_CALLS);
     for (size_t i = 0; i < nvr; i++) {
-        if (ak_log_on(instance, AK_LOG_CALLS)) {
+        if (trace) {
             ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2SetReal: %s = %.17g",
                    AK_VARIABLES[vr[i]].name, value[i]);
         }
