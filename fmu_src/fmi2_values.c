@@ -30,6 +30,21 @@ static bool known_value_reference(const ak_instance *instance, ak_function funct
     return true;
 }
 
+/* True when vr is the run vr[0], vr[0] + 1, ..., all below `end`. Masters usually pass the
+ * variables in the order of modelDescription.xml, which gives such a run: its values can be
+ * copied as a block, with no check per value reference. */
+static bool run_below(const fmi2ValueReference vr[], size_t nvr, size_t end) {
+    if (nvr == 0 || vr[0] + nvr > end) {
+        return false;
+    }
+    for (size_t i = 1; i < nvr; i++) {
+        if (vr[i] != vr[0] + i) {
+            return false;
+        }
+    }
+    return true;
+}
+
 /* The model has only Real variables: any value reference given to the Integer, Boolean and
  * String functions is unknown. */
 static fmi2Status reject_non_real(const ak_instance *instance, ak_function function,
@@ -56,6 +71,14 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
     if (!ak_call_allowed(instance, AK_FMI2_GET_REAL) ||
         !arrays_given(instance, AK_FMI2_GET_REAL, nvr, vr, value)) {
         return fmi2Error;
+    }
+    if (run_below(vr, nvr, AK_N_VARIABLES)) {
+        ak_instance_update_outputs(instance);
+        const double *first = &instance->values[vr[0]];
+        for (size_t i = 0; i < nvr; i++) {
+            value[i] = first[i];
+        }
+        return fmi2OK;
     }
     for (size_t i = 0; i < nvr; i++) {
         if (!known_value_reference(instance, AK_FMI2_GET_REAL, vr[i], i)) {
