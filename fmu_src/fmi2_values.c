@@ -34,7 +34,7 @@ static bool known_value_reference(const ak_instance *instance, ak_function funct
  * variables in the order of modelDescription.xml, which gives such a run: its values can be
  * copied as a block, with no check per value reference. */
 static bool run_below(const fmi2ValueReference vr[], size_t nvr, size_t end) {
-    if (nvr == 0 || vr[0] + nvr > end) {
+    if (nvr == 0 || vr[0] >= end || nvr > end - vr[0]) {
         return false;
     }
     for (size_t i = 1; i < nvr; i++) {
