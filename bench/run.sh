@@ -67,10 +67,10 @@ machine() {
   echo "Date: $(date -u '+%Y-%m-%d %H:%M UTC'); load average: $(cut -d' ' -f1-3 /proc/loadavg)"
   if command -v objdump >/dev/null 2>&1; then
     local core_calls
-    core_calls=$(objdump -d --no-show-raw-insn "$driver" |
+    core_calls=$(objdump -d --no-show-raw-insn "$fmu_so" |
       awk '/<ak_angular_kinematics_123>:/,/^$/' | sed -n 's/.*call.*<\(.*\)>.*/\1/p' |
       sort | uniq -c | awk '{printf "%s%s x%s", sep, $2, $1; sep=", "}')
-    echo "Library calls in the core ak_angular_kinematics_123: ${core_calls:-none}"
+    echo "Library calls in the FMU's core ak_angular_kinematics_123: ${core_calls:-none}"
   fi
 }
 
