@@ -7,14 +7,15 @@
  *     compiler, same flags) that the FMU is built from;
  *   - the full cycle of one communication point: fmi2SetReal of the 9 inputs, fmi2DoStep,
  *     fmi2GetReal of the 12 outputs;
- *   - fmi2GetReal of the 12 outputs when no input changed (the FMU must not recompute);
+ *   - fmi2GetReal of the 12 outputs when no input changed (the FMU must not recompute), in
+ *     value-reference order and reversed; fmi2SetReal of the 9 inputs alone; fmi2DoStep alone;
  *   - fmi2SetReal of one input to a new value followed by fmi2GetReal of the 12 outputs, for
  *     each of the 9 inputs.
- * Every figure is the median over repeats of (loop CPU time / iterations); the loops compared with
- * each other run alternately within each repeat, and their ratio is the median of the per-repeat
- * ratios. Inputs come from a table
- * of 256 different input vectors, cycled, so that nothing is constant across iterations; one
- * output per iteration is added to a sum written to a volatile sink, so no work can be dropped.
+ * Every figure is the median over repeats of (loop CPU time / iterations); the loops compared
+ * with each other run alternately within each repeat, and their ratio is the median of the
+ * per-repeat ratios. Inputs come from a table of 256 different input vectors, cycled, so that
+ * nothing is constant across iterations; one output per iteration is added to a sum written to a
+ * volatile sink, so no work can be dropped.
  *
  * The evaluations are counted, not timed: with the logCalls category on, the FMU logs
  * "kinematics evaluated (evaluation N)". After each timed loop the driver switches the trace on
@@ -25,7 +26,6 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <dlfcn.h>
-#include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -75,23 +75,27 @@ static bool resolve(void *library, const char *name, void *function_pointer, siz
     return true;
 }
 
-#define RESOLVE(api, field, name) resolve((api)->library, name, &(api)->field, sizeof (api)->field)
-
 static bool load_fmu(const char *path, fmu_api *api) {
     api->library = dlopen(path, RTLD_NOW | RTLD_LOCAL);
     if (api->library == NULL) {
         fprintf(stderr, "bench_fmu: cannot load %s: %s\n", path, dlerror());
         return false;
     }
-    return RESOLVE(api, instantiate, "fmi2Instantiate") &&
-           RESOLVE(api, free_instance, "fmi2FreeInstance") &&
-           RESOLVE(api, setup_experiment, "fmi2SetupExperiment") &&
-           RESOLVE(api, enter_initialization_mode, "fmi2EnterInitializationMode") &&
-           RESOLVE(api, exit_initialization_mode, "fmi2ExitInitializationMode") &&
-           RESOLVE(api, terminate, "fmi2Terminate") &&
-           RESOLVE(api, set_debug_logging, "fmi2SetDebugLogging") &&
-           RESOLVE(api, set_real, "fmi2SetReal") && RESOLVE(api, get_real, "fmi2GetReal") &&
-           RESOLVE(api, do_step, "fmi2DoStep");
+    void *l = api->library;
+    return resolve(l, "fmi2Instantiate", &api->instantiate, sizeof api->instantiate) &&
+           resolve(l, "fmi2FreeInstance", &api->free_instance, sizeof api->free_instance) &&
+           resolve(l, "fmi2SetupExperiment", &api->setup_experiment,
+                   sizeof api->setup_experiment) &&
+           resolve(l, "fmi2EnterInitializationMode", &api->enter_initialization_mode,
+                   sizeof api->enter_initialization_mode) &&
+           resolve(l, "fmi2ExitInitializationMode", &api->exit_initialization_mode,
+                   sizeof api->exit_initialization_mode) &&
+           resolve(l, "fmi2Terminate", &api->terminate, sizeof api->terminate) &&
+           resolve(l, "fmi2SetDebugLogging", &api->set_debug_logging,
+                   sizeof api->set_debug_logging) &&
+           resolve(l, "fmi2SetReal", &api->set_real, sizeof api->set_real) &&
+           resolve(l, "fmi2GetReal", &api->get_real, sizeof api->get_real) &&
+           resolve(l, "fmi2DoStep", &api->do_step, sizeof api->do_step);
 }
 
 /* ---- callbacks: count allocations, read the evaluation number from the trace -------------------- */
