@@ -41,6 +41,8 @@ void ak_instance_update_outputs(ak_instance *instance) {
                               &v[AK_VR_ALPHA_FIXED], &v[AK_VR_ALPHA_BODY]);
     instance->outputs_stale = false;
     instance->evaluations++;
-    ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu)",
-           instance->evaluations);
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu)",
+               instance->evaluations);
+    }
 }

@@ -35,7 +35,7 @@ static void format_and_send(const fmi2CallbackFunctions *functions, fmi2String i
 
 void ak_log(const ak_instance *instance, ak_log_category category, fmi2Status status,
             const char *format, ...) {
-    if (!instance->log_enabled[category] || instance->functions.logger == NULL) {
+    if (!ak_log_on(instance, category)) {
         return;
     }
     va_list arguments;

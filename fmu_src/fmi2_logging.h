@@ -15,6 +15,13 @@
 #define AK_PRINTF_FORMAT(f, a)
 #endif
 
+/* True when a message of this category reaches the master. Inline, so that the calls of every
+ * communication point (set, step, get) ask it before ak_log: with the trace off they pay a load
+ * and a branch, not a variadic call per message. */
+static inline bool ak_log_on(const ak_instance *instance, ak_log_category category) {
+    return instance->log_enabled[category] && instance->functions.logger != NULL;
+}
+
 /* Logs a message in a category, if that category is enabled and the master gave a logger. */
 void ak_log(const ak_instance *instance, ak_log_category category, fmi2Status status,
             const char *format, ...) AK_PRINTF_FORMAT(4, 5);

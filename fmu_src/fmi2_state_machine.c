@@ -133,6 +133,8 @@ bool ak_call_allowed(const ak_instance *instance, ak_function function) {
                FUNCTIONS[function].name, ak_state_name(instance->state));
         return false;
     }
-    ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s", FUNCTIONS[function].name);
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s", FUNCTIONS[function].name);
+    }
     return true;
 }

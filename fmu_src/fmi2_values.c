@@ -31,6 +31,21 @@ static bool known_value_reference(const ak_instance *instance, ak_function funct
     return true;
 }
 
+/* True when vr is the run vr[0], vr[0] + 1, ..., all below `end`. Masters usually pass the
+ * variables in the order of modelDescription.xml, which gives such a run: its values can be
+ * copied as a block, with no check per value reference. */
+static bool run_below(const fmi2ValueReference vr[], size_t nvr, size_t end) {
+    if (nvr == 0 || vr[0] >= end || nvr > end - vr[0]) {
+        return false;
+    }
+    for (size_t i = 1; i < nvr; i++) {
+        if (vr[i] != vr[0] + i) {
+            return false;
+        }
+    }
+    return true;
+}
+
 /* The model has only Real variables: any value reference given to the Integer, Boolean and
  * String functions is unknown. */
 static fmi2Status reject_non_real(const ak_instance *instance, ak_function function,
@@ -58,6 +73,14 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         !arrays_given(instance, AK_FMI2_GET_REAL, nvr, vr, value)) {
         return fmi2Error;
     }
+    if (run_below(vr, nvr, AK_N_VARIABLES)) {
+        ak_instance_update_outputs(instance);
+        const double *first = &instance->values[vr[0]];
+        for (size_t i = 0; i < nvr; i++) {
+            value[i] = first[i];
+        }
+        return fmi2OK;
+    }
     for (size_t i = 0; i < nvr; i++) {
         if (!known_value_reference(instance, AK_FMI2_GET_REAL, vr[i], i)) {
             return fmi2Error;
@@ -78,6 +101,11 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
+        /* Inputs have the value references below AK_N_INPUTS (model_variables.h): a finite value
+         * for one of them, the usual case, needs no further check. */
+        if (vr[i] < AK_N_INPUTS && isfinite(value[i])) {
+            continue;
+        }
         if (!known_value_reference(instance, AK_FMI2_SET_REAL, vr[i], i)) {
             return fmi2Error;
         }
@@ -95,9 +123,12 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
             return fmi2Error;
         }
     }
+    const bool trace = ak_log_on(instance, AK_LOG_CALLS);
     for (size_t i = 0; i < nvr; i++) {
-        ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2SetReal: %s = %.17g",
-               AK_VARIABLES[vr[i]].name, value[i]);
+        if (trace) {
+            ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2SetReal: %s = %.17g",
+                   AK_VARIABLES[vr[i]].name, value[i]);
+        }
         /* Only a real change makes the outputs stale: masters often set unchanged inputs. */
         if (instance->values[vr[i]] != value[i]) {
             instance->values[vr[i]] = value[i];

@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# The benchmark (docs/performance.md). Builds the FMU, the driver and the pass-through FMU in
+# Release in build-bench/, then prints, for this machine:
+#   1. the C driver's figures (bench/bench_fmu.c): set/doStep/get cycle vs. the bare core, gets
+#      without input change, gets after one input change, scaling with the step count;
+#   2. instruction counts per step under callgrind, when valgrind is installed (stable where
+#      timings are noisy);
+#   3. the fmpy comparison (bench/fmpy_bench.py): simulate_fmu with AngularKinematics vs. the
+#      pass-through FMU.
+# It asserts no timing; it fails only if something does not run or the FMU evaluates when it
+# should not (the driver counts the evaluations through the logCalls trace).
+#
+# Usage: bash bench/run.sh [--quick] [--steps LIST] [--repeats R] [--calls N]
+#                          [--fmpy-steps N] [--fmpy-repeats R] [--no-callgrind]
+#   --quick          a bounded run for CI (well under 30 s): small counts, no callgrind
+#   --steps LIST     step counts of the scaling runs (default 1e3,1e4,1e5,1e6,1e7)
+#   --repeats R      repeats per figure of the driver, median quoted (default 5)
+#   --calls N        iterations of the driver's single-call loops (default 1e6)
+#   --fmpy-steps N   steps per fmpy simulation (default 100000)
+#   --fmpy-repeats R fmpy simulations per FMU (default 5)
+# The whole output is also written to build-bench/last-run.md.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+arguments="$*"
+steps=1e3,1e4,1e5,1e6,1e7
+repeats=5
+calls=1e6
+fmpy_steps=100000
+fmpy_repeats=5
+callgrind=yes
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) steps=1e3,1e4,1e5; repeats=3; calls=1e5; fmpy_steps=2000; fmpy_repeats=3
+             callgrind=no ;;
+    --steps) steps="$2"; shift ;;
+    --repeats) repeats="$2"; shift ;;
+    --calls) calls="$2"; shift ;;
+    --fmpy-steps) fmpy_steps="$2"; shift ;;
+    --fmpy-repeats) fmpy_repeats="$2"; shift ;;
+    --no-callgrind) callgrind=no ;;
+    *) echo "bench/run.sh: unknown option $1 (see the header of bench/run.sh)" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+bash scripts/setup.sh
+mkdir -p build-bench
+if ! cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DAK_DIST_DIR="$PWD/build-bench/dist" \
+     -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >build-bench/configure.log 2>&1; then
+  cat build-bench/configure.log
+  exit 1
+fi
+cmake --build build-bench --parallel 2 >build-bench/build.log 2>&1 || { cat build-bench/build.log; exit 1; }
+
+fmu_so=build-bench/fmu/binaries/linux64/AngularKinematics.so
+driver=build-bench/bench/bench_fmu
+
+machine() {
+  local model cores flags lto
+  model=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -1)
+  cores=$(nproc)
+  flags=$(sed -n 's/^CMAKE_C_FLAGS_RELEASE:STRING=//p' build-bench/CMakeCache.txt)
+  lto=$(sed -n 's/^AK_LTO:BOOL=//p' build-bench/CMakeCache.txt)
+  echo "Machine: ${model:-unknown CPU}, ${cores} cores ($(uname -m), $(uname -r))"
+  echo "Compiler: $(cc --version | head -1); Release flags: ${flags}, link-time optimization ${lto}"
+  echo "Date: $(date -u '+%Y-%m-%d %H:%M UTC'); load average: $(cut -d' ' -f1-3 /proc/loadavg)"
+  if command -v objdump >/dev/null 2>&1; then
+    local core_calls
+    core_calls=$(objdump -d --no-show-raw-insn "$fmu_so" |
+      awk '/<ak_angular_kinematics_123>:/,/^$/' | sed -n 's/.*call.*<\(.*\)>.*/\1/p' |
+      sort | uniq -c | awk '{printf "%s%s x%s", sep, $2, $1; sep=", "}')
+    echo "Library calls in the FMU's core ak_angular_kinematics_123: ${core_calls:-none}"
+  fi
+}
+
+# Instructions per step of one loop: the difference between two run lengths, so that loading,
+# instantiation and the checks before timing cancel out.
+instructions_per_step() {
+  local loop=$1 small=10000 large=110000 a b
+  a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$driver" "$fmu_so" --only "$loop" \
+      --steps $small 2>&1 | sed -n 's/.*Collected : //p')
+  b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$driver" "$fmu_so" --only "$loop" \
+      --steps $large 2>&1 | sed -n 's/.*Collected : //p')
+  echo $(( (b - a) / (large - small) ))
+}
+
+callgrind_table() {
+  local core cycle get
+  core=$(instructions_per_step core)
+  cycle=$(instructions_per_step cycle)
+  get=$(instructions_per_step get)
+  echo "Instructions per step under valgrind --tool=callgrind (exact, independent of machine load):"
+  echo
+  echo "| loop | instructions per step | / core |"
+  echo "|---|---:|---:|"
+  echo "| bare core | $core | 1.00 |"
+  awk -v c="$cycle" -v k="$core" 'BEGIN { printf "| set 9 + doStep + get 12 | %d | %.2f |\n", c, c / k }'
+  awk -v g="$get" -v k="$core" 'BEGIN { printf "| get 12, no input changed | %d | %.2f |\n", g, g / k }'
+}
+
+{
+  echo "## AngularKinematics benchmark (bash bench/run.sh${arguments:+ $arguments})"
+  echo
+  machine
+  echo
+  "$driver" "$fmu_so" --steps "$steps" --repeats "$repeats" --calls "$calls"
+  echo
+  if [ "$callgrind" = yes ] && command -v valgrind >/dev/null 2>&1; then
+    callgrind_table
+    echo
+  fi
+  .venv/bin/python bench/fmpy_bench.py --fmu build-bench/dist/AngularKinematics.fmu \
+    --passthrough build-bench/passthrough/PassThrough.so --steps "$fmpy_steps" \
+    --repeats "$fmpy_repeats"
+} | tee build-bench/last-run.md
