@@ -23,9 +23,13 @@ static void make_chain(const ak_sequence *sequence, const double theta[3], chain
     }
 }
 
+/* The two axes after each axis, cyclically: rotation about a turns the (a+1, a+2) plane. */
+static const int NEXT[3] = {1, 2, 0};
+static const int AFTER_NEXT[3] = {2, 0, 1};
+
 /* v := R_axis(x) v, with s = sin x, c = cos x. */
 static void rotate(int axis, double s, double c, double v[3]) {
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const int i = NEXT[axis], j = AFTER_NEXT[axis];
     const double vi = v[i], vj = v[j];
     v[i] = c * vi - s * vj;
     v[j] = s * vi + c * vj;
