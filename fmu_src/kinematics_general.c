@@ -65,22 +65,71 @@ static void chain_axes(const chain *ch, double u[3][3], double v[3][3]) {
     }
 }
 
-/* Derivatives of the chain axes (header, section 3), phi_dot in chain order. */
-static void chain_axis_rates(double u[3][3], double v[3][3], const double phi_dot[3],
-                             double du[3][3], double dv[3][3]) {
-    double Omega[3] = {0.0, 0.0, 0.0};
-    for (int m = 0; m < 3; m++) {
-        cross(Omega, u[m], du[m]);
-        for (int r = 0; r < 3; r++) {
-            Omega[r] += phi_dot[m] * u[m][r];
-        }
+/* v := R_a(phi_m) v for the chain rotations first..last, applied innermost (last) first. */
+static void rotate_chain(const chain *ch, int first, int last, double v[3]) {
+    for (int m = last; m >= first; m--) {
+        rotate(ch->axis[m], ch->s[m], ch->c[m], v);
     }
-    double rest[3] = {0.0, 0.0, 0.0};
-    for (int m = 2; m >= 0; m--) {
-        cross(v[m], rest, dv[m]);
-        for (int r = 0; r < 3; r++) {
-            rest[r] += phi_dot[m] * v[m][r];
-        }
+}
+
+/* v := (R_a(phi_first) .. R_a(phi_last))^T v. */
+static void rotate_chain_back(const chain *ch, int first, int last, double v[3]) {
+    for (int m = first; m <= last; m++) {
+        rotate_back(ch->axis[m], ch->s[m], ch->c[m], v);
+    }
+}
+
+/* Derivatives of the chain axes (header, section 3), phi_dot in chain order: du[m], dv[m].
+ * The cross products u_l x u_m and v_m x v_l are formed in the frame where one factor is a unit
+ * axis e_a (then the product only moves and negates components) and rotated out afterwards:
+ *     u_l x u_m = P_l (e_al x (R_a(l+1) .. R_a(m-1) e_am)),  P_l = R_a1 .. R_al,
+ *     v_m x v_l = Q_l^T (((R_a(m+1) .. R_a(l-1))^T e_am) x e_al),  Q_l = R_al .. R_a3.
+ * So no rounding brings in an angle that the exact value does not contain (sin^2 + cos^2 never
+ * has to cancel), and the outputs depend on exactly the inputs their equations contain. */
+typedef struct {
+    double u12[3], u13[3], u23[3];   /* u_l x u_m, fixed components */
+    double v12[3], v13[3], v23[3];   /* v_l x v_m, body components */
+} cross_products;
+
+static void chain_cross_products(const chain *ch, cross_products *x) {
+    double e[3][3], w[3];
+    for (int m = 0; m < 3; m++) {
+        unit(ch->axis[m], e[m]);
+    }
+    cross(e[0], e[1], x->u12);                  /* u1 x u2 = P_1 (e_a1 x e_a2) */
+    rotate_chain(ch, 0, 0, x->u12);
+    for (int r = 0; r < 3; r++) {
+        w[r] = e[2][r];
+    }
+    rotate_chain(ch, 1, 1, w);
+    cross(e[0], w, x->u13);                     /* u1 x u3 = P_1 (e_a1 x R_a2 e_a3) */
+    rotate_chain(ch, 0, 0, x->u13);
+    cross(e[1], e[2], x->u23);                  /* u2 x u3 = P_2 (e_a2 x e_a3) */
+    rotate_chain(ch, 0, 1, x->u23);
+
+    cross(e[0], e[1], x->v12);                  /* v1 x v2 = Q_2^T (e_a1 x e_a2) */
+    rotate_chain_back(ch, 1, 2, x->v12);
+    for (int r = 0; r < 3; r++) {
+        w[r] = e[0][r];
+    }
+    rotate_chain_back(ch, 1, 1, w);
+    cross(w, e[2], x->v13);                     /* v1 x v3 = Q_3^T ((R_a2^T e_a1) x e_a3) */
+    rotate_chain_back(ch, 2, 2, x->v13);
+    cross(e[1], e[2], x->v23);                  /* v2 x v3 = Q_3^T (e_a2 x e_a3) */
+    rotate_chain_back(ch, 2, 2, x->v23);
+}
+
+static void chain_axis_rates(const chain *ch, const double phi_dot[3], double du[3][3],
+                             double dv[3][3]) {
+    cross_products x;
+    chain_cross_products(ch, &x);
+    for (int r = 0; r < 3; r++) {
+        du[0][r] = 0.0;
+        du[1][r] = phi_dot[0] * x.u12[r];
+        du[2][r] = phi_dot[0] * x.u13[r] + phi_dot[1] * x.u23[r];
+        dv[0][r] = phi_dot[1] * x.v12[r] + phi_dot[2] * x.v13[r];
+        dv[1][r] = phi_dot[2] * x.v23[r];
+        dv[2][r] = 0.0;
     }
 }
 
@@ -100,7 +149,7 @@ void ak_general_angular_kinematics(const ak_sequence *sequence, const double the
     chain_axes(&ch, u, v);
     to_chain_order(&ch, theta_dot, pd);
     to_chain_order(&ch, theta_ddot, pdd);
-    chain_axis_rates(u, v, pd, du, dv);
+    chain_axis_rates(&ch, pd, du, dv);
     for (int r = 0; r < 3; r++) {
         omega_fixed[r] = pd[0] * u[0][r] + pd[1] * u[1][r] + pd[2] * u[2][r];
         omega_body[r] = pd[0] * v[0][r] + pd[1] * v[1][r] + pd[2] * v[2][r];
@@ -163,7 +212,7 @@ void ak_general_partials(const ak_sequence *sequence, const double theta[3],
     make_chain(sequence, theta, &ch);
     chain_axes(&ch, u, v);
     to_chain_order(&ch, theta_dot, pd);
-    chain_axis_rates(u, v, pd, du, dv);
+    chain_axis_rates(&ch, pd, du, dv);
     for (int m = 0; m < 3; m++) {
         const int col = ch.angle[m];
         for (int r = 0; r < 3; r++) {
@@ -175,28 +224,24 @@ void ak_general_partials(const ak_sequence *sequence, const double theta[3],
     }
 }
 
-/* det W (header, section 4), in closed form so that it keeps its relative accuracy near zero. */
-static double determinant(const ak_sequence *sequence, const double theta[3]) {
-    if (sequence->proper_euler) {
-        const double s2 = sin(theta[1]);
-        return (sequence->kind == AK_SPACE_FIXED) ? s2 : -s2;
+/* det of the chain's W = [u1 u2 u3] (header, section 4), in closed form so that it keeps its
+ * relative accuracy near zero. det W of the user's theta order is the same for body-fixed
+ * sequences and its negative for space-fixed ones (columns 1 and 3 swapped). */
+static double chain_determinant(const chain *ch) {
+    if (ch->axis[0] == ch->axis[2]) {
+        return -ch->s[1];
     }
-    const int cyclic = ((sequence->axes[1] - sequence->axes[0] + 3) % 3) == 1;
-    const double c2 = cos(theta[1]);
-    return cyclic ? c2 : -c2;
+    return (ch->axis[1] == NEXT[ch->axis[0]]) ? ch->c[1] : -ch->c[1];
 }
 
 double ak_singularity_distance(const ak_sequence *sequence, const double theta[3]) {
-    return fabs(determinant(sequence, theta));
+    chain ch;
+    make_chain(sequence, theta, &ch);
+    return fabs(chain_determinant(&ch));
 }
 
-/* out := W^-1 x, W^-1 = adjugate / det; c[k] is column k of W. */
-static void solve(double c[3][3], double det, const double x[3], double out[3]) {
-    double row[3];
-    for (int k = 0; k < 3; k++) {
-        cross(c[(k + 1) % 3], c[(k + 2) % 3], row);
-        out[k] = (row[0] * x[0] + row[1] * x[1] + row[2] * x[2]) / det;
-    }
+static double dot(const double a[3], const double b[3]) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame frame,
@@ -205,56 +250,59 @@ ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame fra
                                        double theta_dot[3], double theta_ddot[3],
                                        double alpha_fixed[3], double alpha_body[3],
                                        double *distance) {
-    const double det = determinant(sequence, theta);
+    chain ch;
+    make_chain(sequence, theta, &ch);
+    const double det = chain_determinant(&ch);
     *distance = fabs(det);
     const double theta2_size = fabs(theta[1]) > 1.0 ? fabs(theta[1]) : 1.0;
     if (!(*distance > AK_SINGULAR_ROUNDING * DBL_EPSILON * theta2_size)) {
         return AK_RATES_SINGULAR;
     }
 
-    const int f = (frame == AK_FRAME_BODY) ? 1 : 0;
-    double W[2][3][3], W_dot[2][3][3], R[3][3];
-    double columns[3][3], column_rates[3][3];
-    const double zero[3] = {0.0, 0.0, 0.0};
-    double td[3], tdd[3], rhs[3];
-
-    ak_general_partials(sequence, theta, zero, W[0], W[1], W_dot[0], W_dot[1]);
-    for (int k = 0; k < 3; k++) {
-        for (int r = 0; r < 3; r++) {
-            columns[k][r] = W[f][r][k];
-        }
-    }
-    solve(columns, det, omega, td);
-
-    ak_general_partials(sequence, theta, td, W[0], W[1], W_dot[0], W_dot[1]);
-    for (int k = 0; k < 3; k++) {
-        for (int r = 0; r < 3; r++) {
-            column_rates[k][r] = W_dot[f][r][k];
-        }
-    }
+    /* Rows of W^-1 in chain order: (c2 x c3) / det, c3 x c1 / det, (c1 x c2) / det. The middle
+     * row is c2 itself: c2 is a unit vector orthogonal to c1 and c3 (R_a2 keeps the a2 component
+     * of e_a3, which is zero), so it needs no division. The cross products are the exact-structure
+     * ones of chain_cross_products. */
+    const int body = (frame == AK_FRAME_BODY);
+    double u[3][3], v[3][3], du[3][3], dv[3][3], rows[3][3], R[3][3];
+    cross_products x;
+    chain_axes(&ch, u, v);
+    chain_cross_products(&ch, &x);
     for (int r = 0; r < 3; r++) {
-        rhs[r] = omega_dot[r] - (column_rates[0][r] * td[0] + column_rates[1][r] * td[1] +
-                                 column_rates[2][r] * td[2]);
+        rows[0][r] = (body ? x.v23[r] : x.u23[r]) / det;
+        rows[1][r] = body ? v[1][r] : u[1][r];
+        rows[2][r] = (body ? x.v12[r] : x.u12[r]) / det;
     }
-    solve(columns, det, rhs, tdd);
+
+    double pd[3], pdd[3], rhs[3];
+    for (int m = 0; m < 3; m++) {
+        pd[m] = dot(rows[m], omega);
+    }
+    chain_axis_rates(&ch, pd, du, dv);
+    for (int r = 0; r < 3; r++) {
+        double (*rate)[3] = body ? dv : du;
+        rhs[r] = omega_dot[r] - (pd[0] * rate[0][r] + pd[1] * rate[1][r] + pd[2] * rate[2][r]);
+    }
+    for (int m = 0; m < 3; m++) {
+        pdd[m] = dot(rows[m], rhs);
+    }
 
     ak_general_rotation_matrix(sequence, theta, R);
     double other[3];
     for (int r = 0; r < 3; r++) {
-        other[r] = (f == 0)
-                       ? R[0][r] * omega_dot[0] + R[1][r] * omega_dot[1] + R[2][r] * omega_dot[2]
-                       : R[r][0] * omega_dot[0] + R[r][1] * omega_dot[1] + R[r][2] * omega_dot[2];
+        other[r] = body ? R[r][0] * omega_dot[0] + R[r][1] * omega_dot[1] + R[r][2] * omega_dot[2]
+                        : R[0][r] * omega_dot[0] + R[1][r] * omega_dot[1] + R[2][r] * omega_dot[2];
     }
-    for (int k = 0; k < 3; k++) {
-        if (!isfinite(td[k]) || !isfinite(tdd[k]) || !isfinite(other[k])) {
+    for (int m = 0; m < 3; m++) {
+        if (!isfinite(pd[m]) || !isfinite(pdd[m]) || !isfinite(other[m])) {
             return AK_RATES_OVERFLOW;
         }
     }
-    for (int k = 0; k < 3; k++) {
-        theta_dot[k] = td[k];
-        theta_ddot[k] = tdd[k];
-        alpha_fixed[k] = (f == 0) ? omega_dot[k] : other[k];
-        alpha_body[k] = (f == 0) ? other[k] : omega_dot[k];
+    for (int m = 0; m < 3; m++) {
+        theta_dot[ch.angle[m]] = pd[m];
+        theta_ddot[ch.angle[m]] = pdd[m];
+        alpha_fixed[m] = body ? other[m] : omega_dot[m];
+        alpha_body[m] = body ? omega_dot[m] : other[m];
     }
     return (*distance < tolerance) ? AK_RATES_NEAR_SINGULAR : AK_RATES_OK;
 }

@@ -22,14 +22,19 @@
  *
  * 3. Angular acceleration: the derivative of each axis is a cross product
  *   u_m is fixed in F_(m-1), whose angular velocity in N is Omega_(m-1) = sum_{l<m} phi_l' u_l, so
- *       d(u_m)/dt in N = Omega_(m-1) x u_m                  -> column of W_fixed_dot
+ *       d(u_m)/dt in N = Omega_(m-1) x u_m = sum_{l<m} phi_l' (u_l x u_m)    -> W_fixed_dot
  *   and, seen from B (whose angular velocity relative to F_(m-1) is sum_{l>=m} phi_l' u_l),
- *       d(v_m)/dt = v_m x (sum_{l>m} phi_l' v_l)             -> column of W_body_dot
+ *       d(v_m)/dt = v_m x (sum_{l>m} phi_l' v_l) = sum_{l>m} phi_l' (v_m x v_l) -> W_body_dot
  *   The fixed components of alpha are the derivatives of omega_fixed; because omega x omega = 0
  *   the body components of alpha are the derivatives of omega_body. Hence
  *       alpha_fixed = W_fixed theta_ddot + W_fixed_dot theta_dot
  *       alpha_body  = W_body  theta_ddot + W_body_dot  theta_dot.
  *   W_fixed_dot and W_body_dot are the time derivatives of the component matrices W_fixed, W_body.
+ *   Each cross product is formed in the intermediate frame where one factor is a unit axis,
+ *       u_l x u_m = P_l (e_al x (R_a(l+1) .. R_a(m-1) e_am)),      P_l = R_a1 .. R_al
+ *       v_m x v_l = Q_l^T ((R_a(m+1) .. R_a(l-1))^T e_am x e_al),   Q_l = R_al .. R_a3
+ *   and rotated out: no sin^2 + cos^2 has to cancel in rounding, so every output is computed from
+ *   exactly the inputs its equation contains (what <ModelStructure> lists), and from no other.
  *
  * 4. Singular configuration
  *   det W_fixed = det W_body = eps(I,J,K) cos(theta2) for Tait-Bryan (eps = +1 for the cyclic
@@ -53,8 +58,10 @@
  *   derivative of those components (which is alpha in the same components, in either frame):
  *       theta_dot  = W^-1 omega
  *       theta_ddot = W^-1 (omega_dot - W_dot theta_dot)
- *   with W, W_dot of that frame. W^-1 is the adjugate (rows c2 x c3, c3 x c1, c1 x c2 of the
- *   columns c_k) over the closed-form determinant of section 4.
+ *   with W, W_dot of that frame. In chain order W^-1 has the rows (c2 x c3) / det, c2, and
+ *   (c1 x c2) / det (c_m: the chain axes u_m or v_m; det of section 4 in closed form). The middle
+ *   row is c2 itself because c2 is a unit vector orthogonal to c1 and c3, so the middle rate
+ *   never divides by det: only theta1_dot and theta3_dot blow up at the singularity.
  *   Status: AK_RATES_OK; AK_RATES_NEAR_SINGULAR when singularity_distance < tolerance (results
  *   computed, the caller should warn); AK_RATES_SINGULAR when singularity_distance <=
  *   AK_SINGULAR_ROUNDING * max(1, |theta2|), i.e. theta2 is a singular angle to the rounding of
