@@ -199,6 +199,12 @@ static void check_velocity(const ak_sequence *seq, const double theta[3], const 
     const double expected_d = seq->proper_euler ? fabs(sin(theta[1])) : fabs(cos(theta[1]));
     check_close(seq->name, "distance = |cos theta2| or |sin theta2|", d, expected_d, 0.0);
     check_close(seq->name, "|det W_fixed| = distance", fabs(det3(Wf)), d, 1e-15);
+    /* The signs stated in kinematics_general.h, section 4. */
+    const int cyclic = (seq->axes[1] - seq->axes[0] + 3) % 3 == 1;
+    const double signed_det = seq->proper_euler
+                                  ? (seq->kind == AK_SPACE_FIXED ? 1.0 : -1.0) * sin(theta[1])
+                                  : (cyclic ? 1.0 : -1.0) * cos(theta[1]);
+    check_close(seq->name, "det W_fixed = eps cos theta2 or -+sin theta2", det3(Wf), signed_det, 1e-15);
     check_close(seq->name, "|det W_body| = distance", fabs(det3(Wb)), d, 1e-15);
 
     /* Along theta(t) = theta + td t + tdd t^2 / 2: alpha = d(omega)/dt and W_dot = dW/dt,
