@@ -45,10 +45,12 @@ static void unit(int axis, double v[3]) {
     v[axis] = 1.0;
 }
 
-static void cross(const double a[3], const double b[3], double out[3]) {
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
+/* out := e_axis x x: only moves and negates components. */
+static void axis_cross(int axis, const double x[3], double out[3]) {
+    const int i = NEXT[axis], j = AFTER_NEXT[axis];
+    out[axis] = 0.0;
+    out[i] = -x[j];
+    out[j] = x[i];
 }
 
 /* Chain axes in fixed (u) and body (v) components, u[m], v[m] for chain rotation m. */
@@ -92,30 +94,31 @@ typedef struct {
 } cross_products;
 
 static void chain_cross_products(const chain *ch, cross_products *x) {
-    double e[3][3], w[3];
-    for (int m = 0; m < 3; m++) {
-        unit(ch->axis[m], e[m]);
-    }
-    cross(e[0], e[1], x->u12);                  /* u1 x u2 = P_1 (e_a1 x e_a2) */
+    const int a1 = ch->axis[0], a2 = ch->axis[1], a3 = ch->axis[2];
+    double w[3];
+    unit(a2, w);
+    axis_cross(a1, w, x->u12);                  /* u1 x u2 = P_1 (e_a1 x e_a2) */
     rotate_chain(ch, 0, 0, x->u12);
-    for (int r = 0; r < 3; r++) {
-        w[r] = e[2][r];
-    }
+    unit(a3, w);
     rotate_chain(ch, 1, 1, w);
-    cross(e[0], w, x->u13);                     /* u1 x u3 = P_1 (e_a1 x R_a2 e_a3) */
+    axis_cross(a1, w, x->u13);                  /* u1 x u3 = P_1 (e_a1 x R_a2 e_a3) */
     rotate_chain(ch, 0, 0, x->u13);
-    cross(e[1], e[2], x->u23);                  /* u2 x u3 = P_2 (e_a2 x e_a3) */
+    unit(a3, w);
+    axis_cross(a2, w, x->u23);                  /* u2 x u3 = P_2 (e_a2 x e_a3) */
     rotate_chain(ch, 0, 1, x->u23);
 
-    cross(e[0], e[1], x->v12);                  /* v1 x v2 = Q_2^T (e_a1 x e_a2) */
+    unit(a2, w);
+    axis_cross(a1, w, x->v12);                  /* v1 x v2 = Q_2^T (e_a1 x e_a2) */
     rotate_chain_back(ch, 1, 2, x->v12);
-    for (int r = 0; r < 3; r++) {
-        w[r] = e[0][r];
-    }
+    unit(a1, w);
     rotate_chain_back(ch, 1, 1, w);
-    cross(w, e[2], x->v13);                     /* v1 x v3 = Q_3^T ((R_a2^T e_a1) x e_a3) */
+    axis_cross(a3, w, x->v13);                  /* v1 x v3 = Q_3^T ((R_a2^T e_a1) x e_a3) */
+    for (int r = 0; r < 3; r++) {
+        x->v13[r] = -x->v13[r];
+    }
     rotate_chain_back(ch, 2, 2, x->v13);
-    cross(e[1], e[2], x->v23);                  /* v2 x v3 = Q_3^T (e_a2 x e_a3) */
+    unit(a3, w);
+    axis_cross(a2, w, x->v23);                  /* v2 x v3 = Q_3^T (e_a2 x e_a3) */
     rotate_chain_back(ch, 2, 2, x->v23);
 }
 
