@@ -67,7 +67,8 @@
  *   AK_SINGULAR_ROUNDING * max(1, |theta2|), i.e. theta2 is a singular angle to the rounding of
  *   the input (a double theta2 near pi/2 is only known to about DBL_EPSILON |theta2|); AK_RATES_
  *   OVERFLOW when a result is not finite. On AK_RATES_SINGULAR and AK_RATES_OVERFLOW nothing but
- *   the distance is written.
+ *   the distance is written. (A NaN theta2 also gives AK_RATES_SINGULAR; validating inputs is
+ *   the caller's job.)
  */
 #ifndef ANGULAR_KINEMATICS_KINEMATICS_GENERAL_H
 #define ANGULAR_KINEMATICS_KINEMATICS_GENERAL_H
