@@ -1,0 +1,311 @@
+/* General angular kinematics for every rotation sequence: the formulation is stated in
+ * kinematics_general.h. Everything is built from the chain of section 1 and the axes u_m, v_m. */
+#include "kinematics_general.h"
+
+#include <float.h>
+#include <math.h>
+
+/* The sequence as a chain of three body-fixed rotations (header, section 1). */
+typedef struct {
+    int axis[3];    /* 0-based chain axes a1, a2, a3 */
+    double s[3];    /* sin(phi_m) */
+    double c[3];    /* cos(phi_m) */
+    int angle[3];   /* index k of the theta_k that is chain angle m */
+} chain;
+
+static void make_chain(const ak_sequence *sequence, const double theta[3], chain *ch) {
+    for (int m = 0; m < 3; m++) {
+        const int k = (sequence->kind == AK_SPACE_FIXED) ? 2 - m : m;
+        ch->axis[m] = sequence->axes[k] - 1;
+        ch->angle[m] = k;
+        ch->s[m] = sin(theta[k]);
+        ch->c[m] = cos(theta[k]);
+    }
+}
+
+/* The two axes after each axis, cyclically: rotation about a turns the (a+1, a+2) plane. */
+static const int NEXT[3] = {1, 2, 0};
+static const int AFTER_NEXT[3] = {2, 0, 1};
+
+/* v := R_axis(x) v, with s = sin x, c = cos x. */
+static void rotate(int axis, double s, double c, double v[3]) {
+    const int i = NEXT[axis], j = AFTER_NEXT[axis];
+    const double vi = v[i], vj = v[j];
+    v[i] = c * vi - s * vj;
+    v[j] = s * vi + c * vj;
+}
+
+/* v := R_axis(x)^T v. */
+static void rotate_back(int axis, double s, double c, double v[3]) {
+    rotate(axis, -s, c, v);
+}
+
+static void unit(int axis, double v[3]) {
+    v[0] = v[1] = v[2] = 0.0;
+    v[axis] = 1.0;
+}
+
+/* out := e_axis x x: only moves and negates components. */
+static void axis_cross(int axis, const double x[3], double out[3]) {
+    const int i = NEXT[axis], j = AFTER_NEXT[axis];
+    out[axis] = 0.0;
+    out[i] = -x[j];
+    out[j] = x[i];
+}
+
+/* Chain axes in fixed (u) and body (v) components, u[m], v[m] for chain rotation m. */
+static void chain_axes(const chain *ch, double u[3][3], double v[3][3]) {
+    for (int m = 0; m < 3; m++) {
+        unit(ch->axis[m], u[m]);
+        for (int l = m - 1; l >= 0; l--) {
+            rotate(ch->axis[l], ch->s[l], ch->c[l], u[m]);
+        }
+        unit(ch->axis[m], v[m]);
+        for (int l = m + 1; l < 3; l++) {
+            rotate_back(ch->axis[l], ch->s[l], ch->c[l], v[m]);
+        }
+    }
+}
+
+/* v := R_a(phi_m) v for the chain rotations first..last, applied innermost (last) first. */
+static void rotate_chain(const chain *ch, int first, int last, double v[3]) {
+    for (int m = last; m >= first; m--) {
+        rotate(ch->axis[m], ch->s[m], ch->c[m], v);
+    }
+}
+
+/* v := (R_a(phi_first) .. R_a(phi_last))^T v. */
+static void rotate_chain_back(const chain *ch, int first, int last, double v[3]) {
+    for (int m = first; m <= last; m++) {
+        rotate_back(ch->axis[m], ch->s[m], ch->c[m], v);
+    }
+}
+
+/* Derivatives of the chain axes (header, section 3), phi_dot in chain order: du[m], dv[m].
+ * The cross products u_l x u_m and v_m x v_l are formed in the frame where one factor is a unit
+ * axis e_a (then the product only moves and negates components) and rotated out afterwards:
+ *     u_l x u_m = P_l (e_al x (R_a(l+1) .. R_a(m-1) e_am)),  P_l = R_a1 .. R_al,
+ *     v_m x v_l = Q_l^T (((R_a(m+1) .. R_a(l-1))^T e_am) x e_al),  Q_l = R_al .. R_a3.
+ * So no rounding brings in an angle that the exact value does not contain (sin^2 + cos^2 never
+ * has to cancel), and the outputs depend on exactly the inputs their equations contain. */
+typedef struct {
+    double u12[3], u13[3], u23[3];   /* u_l x u_m, fixed components */
+    double v12[3], v13[3], v23[3];   /* v_l x v_m, body components */
+} cross_products;
+
+static void chain_cross_products(const chain *ch, cross_products *x) {
+    const int a1 = ch->axis[0], a2 = ch->axis[1], a3 = ch->axis[2];
+    double w[3];
+    unit(a2, w);
+    axis_cross(a1, w, x->u12);                  /* u1 x u2 = P_1 (e_a1 x e_a2) */
+    rotate_chain(ch, 0, 0, x->u12);
+    unit(a3, w);
+    rotate_chain(ch, 1, 1, w);
+    axis_cross(a1, w, x->u13);                  /* u1 x u3 = P_1 (e_a1 x R_a2 e_a3) */
+    rotate_chain(ch, 0, 0, x->u13);
+    unit(a3, w);
+    axis_cross(a2, w, x->u23);                  /* u2 x u3 = P_2 (e_a2 x e_a3) */
+    rotate_chain(ch, 0, 1, x->u23);
+
+    unit(a2, w);
+    axis_cross(a1, w, x->v12);                  /* v1 x v2 = Q_2^T (e_a1 x e_a2) */
+    rotate_chain_back(ch, 1, 2, x->v12);
+    unit(a1, w);
+    rotate_chain_back(ch, 1, 1, w);
+    axis_cross(a3, w, x->v13);                  /* v1 x v3 = Q_3^T ((R_a2^T e_a1) x e_a3) */
+    for (int r = 0; r < 3; r++) {
+        x->v13[r] = -x->v13[r];
+    }
+    rotate_chain_back(ch, 2, 2, x->v13);
+    unit(a3, w);
+    axis_cross(a2, w, x->v23);                  /* v2 x v3 = Q_3^T (e_a2 x e_a3) */
+    rotate_chain_back(ch, 2, 2, x->v23);
+}
+
+static void chain_axis_rates(const chain *ch, const double phi_dot[3], double du[3][3],
+                             double dv[3][3]) {
+    cross_products x;
+    chain_cross_products(ch, &x);
+    for (int r = 0; r < 3; r++) {
+        du[0][r] = 0.0;
+        du[1][r] = phi_dot[0] * x.u12[r];
+        du[2][r] = phi_dot[0] * x.u13[r] + phi_dot[1] * x.u23[r];
+        dv[0][r] = phi_dot[1] * x.v12[r] + phi_dot[2] * x.v13[r];
+        dv[1][r] = phi_dot[2] * x.v23[r];
+        dv[2][r] = 0.0;
+    }
+}
+
+static void to_chain_order(const chain *ch, const double x[3], double out[3]) {
+    for (int m = 0; m < 3; m++) {
+        out[m] = x[ch->angle[m]];
+    }
+}
+
+void ak_general_angular_kinematics(const ak_sequence *sequence, const double theta[3],
+                                   const double theta_dot[3], const double theta_ddot[3],
+                                   double omega_fixed[3], double omega_body[3],
+                                   double alpha_fixed[3], double alpha_body[3]) {
+    chain ch;
+    double u[3][3], v[3][3], du[3][3], dv[3][3], pd[3], pdd[3];
+    make_chain(sequence, theta, &ch);
+    chain_axes(&ch, u, v);
+    to_chain_order(&ch, theta_dot, pd);
+    to_chain_order(&ch, theta_ddot, pdd);
+    chain_axis_rates(&ch, pd, du, dv);
+    for (int r = 0; r < 3; r++) {
+        omega_fixed[r] = pd[0] * u[0][r] + pd[1] * u[1][r] + pd[2] * u[2][r];
+        omega_body[r] = pd[0] * v[0][r] + pd[1] * v[1][r] + pd[2] * v[2][r];
+        alpha_fixed[r] = pdd[0] * u[0][r] + pdd[1] * u[1][r] + pdd[2] * u[2][r] +
+                         pd[1] * du[1][r] + pd[2] * du[2][r];
+        alpha_body[r] = pdd[0] * v[0][r] + pdd[1] * v[1][r] + pdd[2] * v[2][r] +
+                        pd[0] * dv[0][r] + pd[1] * dv[1][r];
+    }
+}
+
+void ak_general_rotation_matrix(const ak_sequence *sequence, const double theta[3], double R[3][3]) {
+    chain ch;
+    make_chain(sequence, theta, &ch);
+    for (int col = 0; col < 3; col++) {
+        double e[3];
+        unit(col, e);
+        for (int m = 2; m >= 0; m--) {
+            rotate(ch.axis[m], ch.s[m], ch.c[m], e);
+        }
+        for (int r = 0; r < 3; r++) {
+            R[r][col] = e[r];
+        }
+    }
+}
+
+void ak_general_quaternion(const ak_sequence *sequence, const double theta[3], double q[4]) {
+    chain ch;
+    make_chain(sequence, theta, &ch);
+    double p[4] = {1.0, 0.0, 0.0, 0.0};
+    for (int m = 0; m < 3; m++) {
+        const double half = 0.5 * theta[ch.angle[m]];
+        double e[4] = {cos(half), 0.0, 0.0, 0.0};
+        e[1 + ch.axis[m]] = sin(half);
+        /* p := p e, Hamilton product, scalar first. */
+        const double r0 = p[0] * e[0] - p[1] * e[1] - p[2] * e[2] - p[3] * e[3];
+        const double r1 = p[0] * e[1] + p[1] * e[0] + p[2] * e[3] - p[3] * e[2];
+        const double r2 = p[0] * e[2] - p[1] * e[3] + p[2] * e[0] + p[3] * e[1];
+        const double r3 = p[0] * e[3] + p[1] * e[2] - p[2] * e[1] + p[3] * e[0];
+        p[0] = r0;
+        p[1] = r1;
+        p[2] = r2;
+        p[3] = r3;
+    }
+    /* One sign per orientation: q0 > 0, or the first non-zero component positive. */
+    int first = 0;
+    while (first < 3 && p[first] == 0.0) {
+        first++;
+    }
+    const double sign = (p[first] < 0.0) ? -1.0 : 1.0;
+    for (int k = 0; k < 4; k++) {
+        q[k] = sign * p[k];
+    }
+}
+
+void ak_general_partials(const ak_sequence *sequence, const double theta[3],
+                         const double theta_dot[3], double W_fixed[3][3], double W_body[3][3],
+                         double W_fixed_dot[3][3], double W_body_dot[3][3]) {
+    chain ch;
+    double u[3][3], v[3][3], du[3][3], dv[3][3], pd[3];
+    make_chain(sequence, theta, &ch);
+    chain_axes(&ch, u, v);
+    to_chain_order(&ch, theta_dot, pd);
+    chain_axis_rates(&ch, pd, du, dv);
+    for (int m = 0; m < 3; m++) {
+        const int col = ch.angle[m];
+        for (int r = 0; r < 3; r++) {
+            W_fixed[r][col] = u[m][r];
+            W_body[r][col] = v[m][r];
+            W_fixed_dot[r][col] = du[m][r];
+            W_body_dot[r][col] = dv[m][r];
+        }
+    }
+}
+
+/* det of the chain's W = [u1 u2 u3] (header, section 4), in closed form so that it keeps its
+ * relative accuracy near zero. det W of the user's theta order is the same for body-fixed
+ * sequences and its negative for space-fixed ones (columns 1 and 3 swapped). */
+static double chain_determinant(const chain *ch) {
+    if (ch->axis[0] == ch->axis[2]) {
+        return -ch->s[1];
+    }
+    return (ch->axis[1] == NEXT[ch->axis[0]]) ? ch->c[1] : -ch->c[1];
+}
+
+double ak_singularity_distance(const ak_sequence *sequence, const double theta[3]) {
+    chain ch;
+    make_chain(sequence, theta, &ch);
+    return fabs(chain_determinant(&ch));
+}
+
+static double dot(const double a[3], const double b[3]) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame frame,
+                                       const double theta[3], const double omega[3],
+                                       const double omega_dot[3], double tolerance,
+                                       double theta_dot[3], double theta_ddot[3],
+                                       double alpha_fixed[3], double alpha_body[3],
+                                       double *distance) {
+    chain ch;
+    make_chain(sequence, theta, &ch);
+    const double det = chain_determinant(&ch);
+    *distance = fabs(det);
+    const double theta2_size = fabs(theta[1]) > 1.0 ? fabs(theta[1]) : 1.0;
+    if (!(*distance > AK_SINGULAR_ROUNDING * DBL_EPSILON * theta2_size)) {
+        return AK_RATES_SINGULAR;
+    }
+
+    /* Rows of W^-1 in chain order: (c2 x c3) / det, c3 x c1 / det, (c1 x c2) / det. The middle
+     * row is c2 itself: c2 is a unit vector orthogonal to c1 and c3 (R_a2 keeps the a2 component
+     * of e_a3, which is zero), so it needs no division. The cross products are the exact-structure
+     * ones of chain_cross_products. */
+    const int body = (frame == AK_FRAME_BODY);
+    double u[3][3], v[3][3], du[3][3], dv[3][3], rows[3][3], R[3][3];
+    cross_products x;
+    chain_axes(&ch, u, v);
+    chain_cross_products(&ch, &x);
+    for (int r = 0; r < 3; r++) {
+        rows[0][r] = (body ? x.v23[r] : x.u23[r]) / det;
+        rows[1][r] = body ? v[1][r] : u[1][r];
+        rows[2][r] = (body ? x.v12[r] : x.u12[r]) / det;
+    }
+
+    double pd[3], pdd[3], rhs[3];
+    for (int m = 0; m < 3; m++) {
+        pd[m] = dot(rows[m], omega);
+    }
+    chain_axis_rates(&ch, pd, du, dv);
+    for (int r = 0; r < 3; r++) {
+        double (*rate)[3] = body ? dv : du;
+        rhs[r] = omega_dot[r] - (pd[0] * rate[0][r] + pd[1] * rate[1][r] + pd[2] * rate[2][r]);
+    }
+    for (int m = 0; m < 3; m++) {
+        pdd[m] = dot(rows[m], rhs);
+    }
+
+    ak_general_rotation_matrix(sequence, theta, R);
+    double other[3];
+    for (int r = 0; r < 3; r++) {
+        other[r] = body ? R[r][0] * omega_dot[0] + R[r][1] * omega_dot[1] + R[r][2] * omega_dot[2]
+                        : R[0][r] * omega_dot[0] + R[1][r] * omega_dot[1] + R[2][r] * omega_dot[2];
+    }
+    for (int m = 0; m < 3; m++) {
+        if (!isfinite(pd[m]) || !isfinite(pdd[m]) || !isfinite(other[m])) {
+            return AK_RATES_OVERFLOW;
+        }
+    }
+    for (int m = 0; m < 3; m++) {
+        theta_dot[ch.angle[m]] = pd[m];
+        theta_ddot[ch.angle[m]] = pdd[m];
+        alpha_fixed[m] = body ? other[m] : omega_dot[m];
+        alpha_body[m] = body ? omega_dot[m] : other[m];
+    }
+    return (*distance < tolerance) ? AK_RATES_NEAR_SINGULAR : AK_RATES_OK;
+}

@@ -1,0 +1,55 @@
+"""Prints, as Markdown, which inputs each output depends on for every rotation sequence, and the
+union over sequences (and, for EulerRates, over both frames) that a static <ModelStructure> must
+list. Computed on the independent sympy reference (reference_sequences.dependencies); the core is
+checked against the same sets by test_sequences_core.py::test_dependencies_match_reference.
+
+    .venv/bin/python tests/sequence_dependencies.py      (about half a minute)
+"""
+import numpy as np
+
+import reference_sequences as reference
+from test_sequences_core import SEQUENCES
+
+
+def short(inputs, order):
+    return ", ".join(name for name in order if name in inputs) or "(none)"
+
+
+def table(title, outputs, input_order, per_sequence):
+    lines = [f"### {title}", "",
+             "| output | depends on (union) | sequences for which the union is exact |", "|---|---|---|"]
+    for output in outputs:
+        sets = [deps[output] for deps in per_sequence.values()]
+        union = set().union(*sets)
+        exact = f"{sum(s == union for s in sets)} of {len(sets)}"
+        lines.append(f"| {output} | {short(union, input_order)} | {exact} |")
+    return "\n".join(lines)
+
+
+def main():
+    rng = np.random.default_rng(20261121)
+    states = rng.uniform(-2, 2, (2, 9))
+    forward, rates = {}, {}
+    for name in SEQUENCES:
+        forward[name] = reference.dependencies(lambda x: reference.kinematics_values(name, x),
+                                               reference.KINEMATICS_INPUTS,
+                                               reference.KINEMATICS_OUTPUTS, states)
+        for frame in ("fixed", "body"):
+            rates[name, frame] = reference.dependencies(
+                lambda x: reference.rates_values(name, frame, x), reference.RATES_INPUTS,
+                reference.RATES_OUTPUTS, states)
+    print(table("AngularKinematics (q[1..4]: theta[1..3] for every sequence; "
+                "singularity_distance: theta[2] alone)",
+                reference.KINEMATICS_OUTPUTS, reference.KINEMATICS_INPUTS, forward))
+    print()
+    print(table("EulerRates (union over sequences and over the frame parameter)",
+                reference.RATES_OUTPUTS, reference.RATES_INPUTS, rates))
+    for frame in ("fixed", "body"):
+        print()
+        print(table(f"EulerRates, {frame}-frame inputs only", reference.RATES_OUTPUTS,
+                    reference.RATES_INPUTS,
+                    {name: rates[name, f] for name, f in rates if f == frame}))
+
+
+if __name__ == "__main__":
+    main()
