@@ -268,14 +268,14 @@ static double time_cycle(fmu_api *api, long n) {
     double outputs[N_OUTPUTS];
     double sum = 0.0, t = fmu.time;
     int k = 0;
-    int statuses = fmi2OK;
+    unsigned int statuses = fmi2OK;
     const double start = now_ns();
     for (long step = 0; step < n; step++) {
         const double *u = input_table[step & (TABLE_ROWS - 1)];
-        statuses |= api->set_real(fmu.component, INPUT_VRS, N_INPUTS, u);
-        statuses |= api->do_step(fmu.component, t, STEP_SIZE, fmi2True);
+        statuses |= (unsigned int)api->set_real(fmu.component, INPUT_VRS, N_INPUTS, u);
+        statuses |= (unsigned int)api->do_step(fmu.component, t, STEP_SIZE, fmi2True);
         t += STEP_SIZE;
-        statuses |= api->get_real(fmu.component, OUTPUT_VRS, N_OUTPUTS, outputs);
+        statuses |= (unsigned int)api->get_real(fmu.component, OUTPUT_VRS, N_OUTPUTS, outputs);
         sum += outputs[k];
         k = k == N_OUTPUTS - 1 ? 0 : k + 1;
     }
@@ -298,10 +298,10 @@ static double time_get_unchanged(fmu_api *api, const fmi2ValueReference *vrs, lo
     double outputs[N_OUTPUTS];
     double sum = 0.0;
     int k = 0;
-    int statuses = fmi2OK;
+    unsigned int statuses = fmi2OK;
     const double start = now_ns();
     for (long call = 0; call < n; call++) {
-        statuses |= api->get_real(fmu.component, vrs, N_OUTPUTS, outputs);
+        statuses |= (unsigned int)api->get_real(fmu.component, vrs, N_OUTPUTS, outputs);
         sum += outputs[k];
         k = k == N_OUTPUTS - 1 ? 0 : k + 1;
     }
@@ -319,10 +319,10 @@ static double time_get_unchanged(fmu_api *api, const fmi2ValueReference *vrs, lo
 static double time_set_only(fmu_api *api, long n) {
     instance fmu;
     start_instance(api, &fmu);
-    int statuses = fmi2OK;
+    unsigned int statuses = fmi2OK;
     const double start = now_ns();
     for (long call = 0; call < n; call++) {
-        statuses |= api->set_real(fmu.component, INPUT_VRS, N_INPUTS,
+        statuses |= (unsigned int)api->set_real(fmu.component, INPUT_VRS, N_INPUTS,
                                   input_table[call & (TABLE_ROWS - 1)]);
     }
     const double elapsed = now_ns() - start;
@@ -335,11 +335,11 @@ static double time_set_only(fmu_api *api, long n) {
 static double time_step_only(fmu_api *api, long n) {
     instance fmu;
     start_instance(api, &fmu);
-    int statuses = fmi2OK;
+    unsigned int statuses = fmi2OK;
     double t = fmu.time;
     const double start = now_ns();
     for (long call = 0; call < n; call++) {
-        statuses |= api->do_step(fmu.component, t, STEP_SIZE, fmi2True);
+        statuses |= (unsigned int)api->do_step(fmu.component, t, STEP_SIZE, fmi2True);
         t += STEP_SIZE;
     }
     const double elapsed = now_ns() - start;
@@ -357,12 +357,12 @@ static double time_single_change(fmu_api *api, int input, long n) {
     double outputs[N_OUTPUTS];
     double sum = 0.0;
     int k = 0;
-    int statuses = fmi2OK;
+    unsigned int statuses = fmi2OK;
     const double start = now_ns();
     for (long call = 0; call < n; call++) {
         const double *u = input_table[(call + 1) & (TABLE_ROWS - 1)];
-        statuses |= api->set_real(fmu.component, &INPUT_VRS[input], 1, &u[input]);
-        statuses |= api->get_real(fmu.component, OUTPUT_VRS, N_OUTPUTS, outputs);
+        statuses |= (unsigned int)api->set_real(fmu.component, &INPUT_VRS[input], 1, &u[input]);
+        statuses |= (unsigned int)api->get_real(fmu.component, OUTPUT_VRS, N_OUTPUTS, outputs);
         sum += outputs[k];
         k = k == N_OUTPUTS - 1 ? 0 : k + 1;
     }
