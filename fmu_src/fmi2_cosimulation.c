@@ -2,6 +2,7 @@
  * step only moves the time and the inputs: held over the step, or moved along the polynomials
  * given by fmi2SetRealInputDerivatives; the outputs at the end are those of the inputs there. */
 #include <math.h>
+#include <string.h>
 
 #include "fmi2Functions.h"
 #include "fmi2_derivatives.h"
@@ -17,6 +18,39 @@ static bool times_close(double a, double b) {
     /* Not fmax: that is a library call, paid at every step; the two agree on non-NaN values. */
     const double scale = fabs(a) > fabs(b) ? fabs(a) : fabs(b);
     return fabs(a - b) <= TIME_RELATIVE_TOLERANCE * scale;
+}
+
+/* A step of a model whose evaluation can fail: the outputs are evaluated at the end of the step.
+ * When that fails the step is not taken (fmi2Discard, StepFailed): time, inputs and outputs stay
+ * those of the last successful communication point, which fmi2GetRealStatus(
+ * fmi2LastSuccessfulTime) reports; fmi2GetBooleanStatus(fmi2Terminated) stays false, so the
+ * master may go back with fmi2SetFMUstate or fmi2Reset, or terminate. */
+static fmi2Status step_evaluating(ak_instance *instance, double t, double h) {
+    double saved_values[AK_MAX_VARIABLES];
+    double saved_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
+    memcpy(saved_values, instance->values, sizeof saved_values);
+    memcpy(saved_derivatives, instance->input_derivatives, sizeof saved_derivatives);
+    const bool saved_any = instance->any_input_derivative;
+    if (!ak_advance_inputs(instance, h)) {
+        return fmi2Error;
+    }
+    const ak_eval_status status = ak_instance_update_outputs(instance);
+    if (status == AK_EVAL_FAILED) {
+        memcpy(instance->values, saved_values, sizeof saved_values);
+        memcpy(instance->input_derivatives, saved_derivatives, sizeof saved_derivatives);
+        instance->any_input_derivative = saved_any;
+        instance->state = AK_STATE_STEP_FAILED;
+        ak_log(instance, AK_LOG_WARNING, fmi2Discard,
+               "fmi2DoStep: the step from %.17g to %.17g is discarded: the outputs cannot be "
+               "evaluated at its end; last successful time %.17g",
+               t, t + h, instance->time);
+        return fmi2Discard;
+    }
+    instance->time = t + h;
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2DoStep: from %.17g to %.17g", t, t + h);
+    }
+    return ak_instance_read_status(instance, status);
 }
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
@@ -54,6 +88,9 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                "%.17g, past stopTime = %.17g",
                t, h, end, instance->stop_time);
         return fmi2Error;
+    }
+    if (AK_MODEL.evaluate_in_step) {
+        return step_evaluating(instance, t, h);
     }
     if (!ak_advance_inputs(instance, h)) {
         return fmi2Error;

@@ -1,8 +1,9 @@
 /* FMI 2.0 derivatives: co-simulation input derivatives (canInterpolateInputs), output
  * derivatives (maxOutputDerivativeOrder = 1) and directional derivatives
- * (providesDirectionalDerivative). The mathematics is the kinematics core's
- * (ak_angular_kinematics_123_jacobian, ak_angular_jerk_123); this file only checks arguments,
- * selects rows and columns and applies seeds. */
+ * (providesDirectionalDerivative). The mathematics is the model's (ak_model.jacobian,
+ * ak_model.output_derivatives); this file only checks arguments, selects rows and columns and
+ * applies seeds. A model without one of them gets the FMI function refused with a message naming
+ * the capability flag, which its modelDescription.xml sets to false / 0. */
 #include "fmi2_derivatives.h"
 
 #include <math.h>
@@ -10,14 +11,13 @@
 #include "fmi2Functions.h"
 #include "fmi2_logging.h"
 #include "fmi2_state_machine.h"
-#include "kinematics.h"
 
 /* The highest order fmi2GetRealOutputDerivatives gives: maxOutputDerivativeOrder. */
 #define AK_MAX_OUTPUT_DERIVATIVE_ORDER 1
 
 static void update_any_input_derivative(ak_instance *instance) {
     instance->any_input_derivative = false;
-    for (int k = 0; k < AK_N_INPUTS; k++) {
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
             if (instance->input_derivatives[k][n] != 0.0) {
                 instance->any_input_derivative = true;
@@ -37,8 +37,8 @@ bool ak_advance_inputs(ak_instance *instance, double h) {
     if (!instance->any_input_derivative) {
         return true; /* zero-order hold: nothing moves */
     }
-    double value[AK_N_INPUTS], slope[AK_N_INPUTS];
-    for (int k = 0; k < AK_N_INPUTS; k++) {
+    double value[AK_MAX_INPUTS], slope[AK_MAX_INPUTS];
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         const double d1 = instance->input_derivatives[k][0];
         const double d2 = instance->input_derivatives[k][1];
         value[k] = instance->values[k] + h * (d1 + 0.5 * h * d2);
@@ -47,14 +47,14 @@ bool ak_advance_inputs(ak_instance *instance, double h) {
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
                    "fmi2DoStep: extrapolating %s = %.17g with derivatives %g (order 1) and %g "
                    "(order 2) over communicationStepSize = %g overflows; step not taken",
-                   AK_VARIABLES[k].name, instance->values[k], d1, d2, h);
+                   AK_MODEL.variables[k].name, instance->values[k], d1, d2, h);
             return false;
         }
     }
-    for (int k = 0; k < AK_N_INPUTS; k++) {
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         if (value[k] != instance->values[k]) {
             instance->values[k] = value[k];
-            instance->outputs_stale = true;
+            ak_instance_inputs_changed(instance);
         }
         instance->input_derivatives[k][0] = slope[k];
     }
@@ -87,26 +87,41 @@ static bool arrays_given(const ak_instance *instance, ak_function function, size
 static bool value_reference_is(const ak_instance *instance, ak_function function,
                                const char *array_name, size_t index, fmi2ValueReference vr,
                                ak_causality causality) {
-    if (vr >= AK_N_VARIABLES) {
+    if (vr >= (fmi2ValueReference)AK_MODEL.n_variables) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: %s[%zu] = %u is not a value reference of this FMU (0 to %d)",
-               ak_function_name(function), array_name, index, vr, AK_N_VARIABLES - 1);
+               ak_function_name(function), array_name, index, vr, AK_MODEL.n_variables - 1);
         return false;
     }
-    if (AK_VARIABLES[vr].causality != causality) {
+    if (AK_MODEL.variables[vr].causality != causality) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error, "%s: %s[%zu] = %u is %s, an %s; expected an %s",
-               ak_function_name(function), array_name, index, vr, AK_VARIABLES[vr].name,
-               ak_causality_name(AK_VARIABLES[vr].causality), ak_causality_name(causality));
+               ak_function_name(function), array_name, index, vr, AK_MODEL.variables[vr].name,
+               ak_causality_name(AK_MODEL.variables[vr].causality), ak_causality_name(causality));
         return false;
     }
     return true;
+}
+
+/* The refusal of a function behind a capability flag the model does not claim. */
+static fmi2Status not_provided(const ak_instance *instance, ak_function function,
+                               const char *flag) {
+    ak_log(instance, AK_LOG_ERROR, fmi2Error,
+           "%s: not provided by %s (modelDescription.xml: %s)", ak_function_name(function),
+           AK_MODEL.model_identifier, flag);
+    return fmi2Error;
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                        const fmi2Integer order[], const fmi2Real value[]) {
     ak_instance *instance = c;
     const ak_function self = AK_FMI2_SET_REAL_INPUT_DERIVATIVES;
-    if (!ak_call_allowed(instance, self) ||
+    if (!ak_call_allowed(instance, self)) {
+        return fmi2Error;
+    }
+    if (!AK_MODEL.can_interpolate_inputs) {
+        return not_provided(instance, self, "canInterpolateInputs=\"false\"");
+    }
+    if (
         !arrays_given(instance, self, nvr, "nvr", vr, "vr", order, "order", value, "value")) {
         return fmi2Error;
     }
@@ -118,21 +133,21 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
                    "fmi2SetRealInputDerivatives: order[%zu] = %d for %s: this FMU takes orders "
                    "1 to %d; no derivative set",
-                   i, (int)order[i], AK_VARIABLES[vr[i]].name, AK_MAX_INPUT_DERIVATIVE_ORDER);
+                   i, (int)order[i], AK_MODEL.variables[vr[i]].name, AK_MAX_INPUT_DERIVATIVE_ORDER);
             return fmi2Error;
         }
         if (!isfinite(value[i])) {
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
                    "fmi2SetRealInputDerivatives: derivative of order %d of %s = %g (vr[%zu] = "
                    "%u) is not finite; no derivative set",
-                   (int)order[i], AK_VARIABLES[vr[i]].name, value[i], i, vr[i]);
+                   (int)order[i], AK_MODEL.variables[vr[i]].name, value[i], i, vr[i]);
             return fmi2Error;
         }
     }
     for (size_t i = 0; i < nvr; i++) {
         ak_log(instance, AK_LOG_CALLS, fmi2OK,
                "fmi2SetRealInputDerivatives: derivative of order %d of %s = %.17g",
-               (int)order[i], AK_VARIABLES[vr[i]].name, value[i]);
+               (int)order[i], AK_MODEL.variables[vr[i]].name, value[i]);
         instance->input_derivatives[vr[i]][order[i] - 1] = value[i];
     }
     update_any_input_derivative(instance);
@@ -143,7 +158,13 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
                                         const fmi2Integer order[], fmi2Real value[]) {
     ak_instance *instance = c;
     const ak_function self = AK_FMI2_GET_REAL_OUTPUT_DERIVATIVES;
-    if (!ak_call_allowed(instance, self) ||
+    if (!ak_call_allowed(instance, self)) {
+        return fmi2Error;
+    }
+    if (AK_MODEL.output_derivatives == NULL) {
+        return not_provided(instance, self, "maxOutputDerivativeOrder=\"0\"");
+    }
+    if (
         !arrays_given(instance, self, nvr, "nvr", vr, "vr", order, "order", value, "value")) {
         return fmi2Error;
     }
@@ -155,37 +176,16 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
                    "fmi2GetRealOutputDerivatives: order[%zu] = %d for %s: this FMU gives order "
                    "%d only (maxOutputDerivativeOrder)",
-                   i, (int)order[i], AK_VARIABLES[vr[i]].name, AK_MAX_OUTPUT_DERIVATIVE_ORDER);
+                   i, (int)order[i], AK_MODEL.variables[vr[i]].name, AK_MAX_OUTPUT_DERIVATIVE_ORDER);
             return fmi2Error;
         }
     }
-    ak_instance_update_outputs(instance);
-    const double *v = instance->values;
-    /* The derivative of theta_ddot, when the master gave it; zero otherwise. */
-    const double theta_dddot[3] = {instance->input_derivatives[AK_VR_THETA_DDOT + 0][0],
-                                   instance->input_derivatives[AK_VR_THETA_DDOT + 1][0],
-                                   instance->input_derivatives[AK_VR_THETA_DDOT + 2][0]};
-    const bool jerk_assumed = theta_dddot[0] == 0.0 && theta_dddot[1] == 0.0 &&
-                              theta_dddot[2] == 0.0;
-    double jerk[6]; /* fixed, then body components */
-    ak_angular_jerk_123(&v[AK_VR_THETA], &v[AK_VR_THETA_DOT], &v[AK_VR_THETA_DDOT], theta_dddot,
-                        &jerk[0], &jerk[3]);
-    for (size_t i = 0; i < nvr; i++) {
-        const unsigned int r = vr[i];
-        if (r < AK_VR_ALPHA_FIXED) {
-            /* d(omega)/dt = alpha, component by component in either frame. */
-            value[i] = v[r + (AK_VR_ALPHA_FIXED - AK_VR_OMEGA_FIXED)];
-        } else {
-            value[i] = jerk[r - AK_VR_ALPHA_FIXED];
-            if (jerk_assumed) {
-                ak_log(instance, AK_LOG_CALLS, fmi2OK,
-                       "fmi2GetRealOutputDerivatives: d(%s)/dt uses theta_dddot = 0 (no nonzero "
-                       "derivative of theta_ddot was given)",
-                       AK_VARIABLES[r].name);
-            }
-        }
+    const fmi2Status status = ak_instance_read_status(instance, ak_instance_update_outputs(instance));
+    if (status == fmi2Error || status == fmi2Discard) {
+        return status;
     }
-    return fmi2OK;
+    AK_MODEL.output_derivatives(instance, vr, nvr, value);
+    return status;
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[],
@@ -194,7 +194,13 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
                                         fmi2Real dvUnknown[]) {
     ak_instance *instance = c;
     const ak_function self = AK_FMI2_GET_DIRECTIONAL_DERIVATIVE;
-    if (!ak_call_allowed(instance, self) ||
+    if (!ak_call_allowed(instance, self)) {
+        return fmi2Error;
+    }
+    if (AK_MODEL.jacobian == NULL) {
+        return not_provided(instance, self, "providesDirectionalDerivative=\"false\"");
+    }
+    if (
         !arrays_given(instance, self, nUnknown, "nUnknown", vUnknown_ref, "vUnknown_ref",
                       dvUnknown, "dvUnknown", NULL, NULL) ||
         !arrays_given(instance, self, nKnown, "nKnown", vKnown_ref, "vKnown_ref", dvKnown,
@@ -215,21 +221,22 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
         if (!isfinite(dvKnown[j])) {
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
                    "fmi2GetDirectionalDerivative: dvKnown[%zu] = %g (seed of %s) is not finite",
-                   j, dvKnown[j], AK_VARIABLES[vKnown_ref[j]].name);
+                   j, dvKnown[j], AK_MODEL.variables[vKnown_ref[j]].name);
             return fmi2Error;
         }
     }
-    const double *v = instance->values;
-    double J[AK_KINEMATICS_N_OUTPUTS][AK_KINEMATICS_N_INPUTS];
-    ak_angular_kinematics_123_jacobian(&v[AK_VR_THETA], &v[AK_VR_THETA_DOT], &v[AK_VR_THETA_DDOT],
-                                       J);
-    for (size_t i = 0; i < nUnknown; i++) {
-        const double *row = J[vUnknown_ref[i] - AK_N_INPUTS];
-        double sum = 0.0;
-        for (size_t j = 0; j < nKnown; j++) {
-            sum += row[vKnown_ref[j]] * dvKnown[j];
+    /* Row by row, at most AK_MAX_VARIABLES rows at a time. */
+    double J[AK_MAX_VARIABLES][AK_MAX_INPUTS];
+    for (size_t first = 0; first < nUnknown; first += AK_MAX_VARIABLES) {
+        const size_t n = nUnknown - first < AK_MAX_VARIABLES ? nUnknown - first : AK_MAX_VARIABLES;
+        AK_MODEL.jacobian(instance, &vUnknown_ref[first], n, J);
+        for (size_t i = 0; i < n; i++) {
+            double sum = 0.0;
+            for (size_t j = 0; j < nKnown; j++) {
+                sum += J[i][vKnown_ref[j]] * dvKnown[j];
+            }
+            dvUnknown[first + i] = sum;
         }
-        dvUnknown[i] = sum;
     }
     return fmi2OK;
 }

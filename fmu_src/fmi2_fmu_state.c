@@ -2,12 +2,13 @@
  * canSerializeFMUstate).
  *
  * An FMU state holds its serialized form, so there is one layout and one validator for both.
- * The layout (format version 1) is fixed and little-endian, with no pointers:
+ * The layout (format version 2) is little-endian, with no pointers; N is the model's number of
+ * variables (71 AngularKinematics, 25 EulerRates), I its number of inputs (9 both):
  *
  *   offset size  field
  *        0    8  magic "AKinFMUs"
- *        8    4  format version (1)
- *       12    4  total size in bytes (404)
+ *        8    4  format version (2; version 1 held the 21 values of the 1-2-3-only FMU)
+ *       12    4  total size in bytes (92 + 8 N + 16 I: 804 AngularKinematics, 436 EulerRates)
  *       16   40  GUID of the FMU, NUL-padded
  *       56    4  fmuType of the instance (0 model exchange, 1 co-simulation)
  *       60    4  state-machine state (one ak_state bit)
@@ -15,9 +16,9 @@
  *       72    8  stop time
  *       80    4  stop time defined (0 or 1)
  *       84    4  reserved, 0
- *       88  168  the 21 variable values, by value reference
- *      256  144  the input derivatives: 9 inputs x orders 1 and 2
- *      400    4  CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320) of bytes 0 to 399
+ *       88  8 N  the variable values, by value reference: inputs, outputs, parameters
+ *   88+8N  16 I  the input derivatives: I inputs x orders 1 and 2
+ *  88+8N+16I  4  CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320) of the bytes before it
  *
  * What is not in a state: the instance name, the callbacks and the debug-logging settings
  * belong to the instance, not to the simulation, and stay as they are when a state is set.
@@ -34,7 +35,7 @@
 #include "fmi2_state_machine.h"
 
 #define AK_STATE_MAGIC "AKinFMUs"
-#define AK_STATE_FORMAT_VERSION 1u
+#define AK_STATE_FORMAT_VERSION 2u
 #define AK_STATE_GUID_FIELD 40
 
 enum {
@@ -49,21 +50,24 @@ enum {
     OFFSET_STOP_TIME_DEFINED = 80,
     OFFSET_RESERVED = 84,
     OFFSET_VALUES = 88,
-    OFFSET_INPUT_DERIVATIVES = OFFSET_VALUES + 8 * AK_N_VARIABLES,
-    OFFSET_CHECKSUM =
-        OFFSET_INPUT_DERIVATIVES + 8 * AK_N_INPUTS * AK_MAX_INPUT_DERIVATIVE_ORDER,
-    AK_STATE_SIZE = OFFSET_CHECKSUM + 4
+    /* The largest state any model can have: the in-memory buffer's size. */
+    AK_STATE_MAX_SIZE = OFFSET_VALUES + 8 * AK_MAX_VARIABLES +
+                        8 * AK_MAX_INPUTS * AK_MAX_INPUT_DERIVATIVE_ORDER + 4
 };
 
+/* The model's offsets (the layout above). */
+#define OFFSET_INPUT_DERIVATIVES ((size_t)OFFSET_VALUES + 8u * (size_t)AK_MODEL.n_variables)
+#define OFFSET_CHECKSUM                                                                          \
+    (OFFSET_INPUT_DERIVATIVES + 8u * (size_t)AK_MODEL.n_inputs * AK_MAX_INPUT_DERIVATIVE_ORDER)
+#define AK_STATE_SIZE (OFFSET_CHECKSUM + 4u)
+
 _Static_assert(sizeof(double) == 8, "the layout stores IEEE 754 binary64 doubles");
-_Static_assert(sizeof(AK_GUID) <= AK_STATE_GUID_FIELD, "the GUID must fit its field");
-_Static_assert(AK_STATE_SIZE == 404, "the documented layout");
 
 /* The in-memory FMU state: a tag that tells our states from stray pointers, and the bytes. */
 #define AK_STATE_TAG 0x414b5354u /* "AKST" */
 typedef struct {
     uint32_t tag;
-    unsigned char bytes[AK_STATE_SIZE];
+    unsigned char bytes[AK_STATE_MAX_SIZE];
 } ak_fmu_state;
 
 /* The decoded content of a state. */
@@ -73,8 +77,8 @@ typedef struct {
     double time;
     bool stop_time_defined;
     double stop_time;
-    double values[AK_N_VARIABLES];
-    double input_derivatives[AK_N_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
+    double values[AK_MAX_VARIABLES];
+    double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
 } ak_state_content;
 
 static uint32_t crc32(const unsigned char *bytes, size_t n) {
@@ -120,23 +124,23 @@ static double get_f64(const unsigned char *p) {
     return value;
 }
 
-static void encode(const ak_instance *instance, unsigned char bytes[AK_STATE_SIZE]) {
+static void encode(const ak_instance *instance, unsigned char bytes[AK_STATE_MAX_SIZE]) {
     memset(bytes, 0, AK_STATE_SIZE);
     memcpy(bytes + OFFSET_MAGIC, AK_STATE_MAGIC, 8);
     put_u32(bytes + OFFSET_VERSION, AK_STATE_FORMAT_VERSION);
-    put_u32(bytes + OFFSET_SIZE, AK_STATE_SIZE);
-    memcpy(bytes + OFFSET_GUID, AK_GUID, sizeof(AK_GUID) - 1);
+    put_u32(bytes + OFFSET_SIZE, (uint32_t)AK_STATE_SIZE);
+    memcpy(bytes + OFFSET_GUID, AK_MODEL.guid, strlen(AK_MODEL.guid));
     put_u32(bytes + OFFSET_FMU_TYPE, (uint32_t)instance->fmu_type);
     put_u32(bytes + OFFSET_STATE, (uint32_t)instance->state);
     put_f64(bytes + OFFSET_TIME, instance->time);
     put_f64(bytes + OFFSET_STOP_TIME, instance->stop_time);
     put_u32(bytes + OFFSET_STOP_TIME_DEFINED, instance->stop_time_defined ? 1u : 0u);
-    for (int vr = 0; vr < AK_N_VARIABLES; vr++) {
-        put_f64(bytes + OFFSET_VALUES + 8 * vr, instance->values[vr]);
+    for (int vr = 0; vr < AK_MODEL.n_variables; vr++) {
+        put_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr, instance->values[vr]);
     }
-    for (int k = 0; k < AK_N_INPUTS; k++) {
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-            put_f64(bytes + OFFSET_INPUT_DERIVATIVES + 8 * (AK_MAX_INPUT_DERIVATIVE_ORDER * k + n),
+            put_f64(bytes + OFFSET_INPUT_DERIVATIVES + 8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n),
                     instance->input_derivatives[k][n]);
         }
     }
@@ -172,7 +176,8 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
     const char *name = ak_function_name(function);
     if (size < OFFSET_GUID || memcmp(bytes + OFFSET_MAGIC, AK_STATE_MAGIC, 8) != 0) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
-               "%s: the %zu bytes are not an AngularKinematics FMU state (%s)", name, size,
+               "%s: the %zu bytes are not an %s FMU state (%s)", name, size,
+               AK_MODEL.model_identifier,
                size < OFFSET_GUID ? "too short for the header" : "wrong magic bytes");
         return false;
     }
@@ -187,8 +192,9 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
     if (size != AK_STATE_SIZE || declared != AK_STATE_SIZE) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: the FMU state is %zu bytes long and declares %u bytes; format version %u "
-               "has %d bytes (truncated or extended)",
-               name, size, declared, AK_STATE_FORMAT_VERSION, AK_STATE_SIZE);
+               "of %s has %zu bytes (truncated or extended)",
+               name, size, declared, AK_STATE_FORMAT_VERSION, AK_MODEL.model_identifier,
+               (size_t)AK_STATE_SIZE);
         return false;
     }
     const uint32_t stored = get_u32(bytes + OFFSET_CHECKSUM);
@@ -202,10 +208,10 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
     char guid[AK_STATE_GUID_FIELD + 1];
     memcpy(guid, bytes + OFFSET_GUID, AK_STATE_GUID_FIELD);
     guid[AK_STATE_GUID_FIELD] = '\0';
-    if (strcmp(guid, AK_GUID) != 0) {
+    if (strcmp(guid, AK_MODEL.guid) != 0) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
-               "%s: the FMU state is of an FMU with GUID \"%s\", not this one's \"%s\"", name,
-               guid, AK_GUID);
+               "%s: the FMU state is of an FMU with GUID \"%s\", not this one's (%s) \"%s\"",
+               name, guid, AK_MODEL.model_identifier, AK_MODEL.guid);
         return false;
     }
     const uint32_t fmu_type = get_u32(bytes + OFFSET_FMU_TYPE);
@@ -229,24 +235,34 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
                name, state, content->time, content->stop_time, stop_time_defined);
         return false;
     }
-    for (int vr = 0; vr < AK_N_VARIABLES; vr++) {
-        content->values[vr] = get_f64(bytes + OFFSET_VALUES + 8 * vr);
+    for (int vr = 0; vr < AK_MODEL.n_variables; vr++) {
+        const ak_variable *variable = &AK_MODEL.variables[vr];
+        content->values[vr] = get_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr);
         if (!isfinite(content->values[vr])) {
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
-                   "%s: the FMU state holds %s = %g, which is not finite", name,
-                   AK_VARIABLES[vr].name, content->values[vr]);
+                   "%s: the FMU state holds %s = %g, which is not finite", name, variable->name,
+                   content->values[vr]);
+            return false;
+        }
+        const bool integral = variable->type != AK_TYPE_INTEGER ||
+                              content->values[vr] == floor(content->values[vr]);
+        if (variable->causality == AK_CAUSALITY_PARAMETER &&
+            (!integral || AK_MODEL.check_parameter(variable, content->values[vr]) != NULL)) {
+            ak_log(instance, AK_LOG_ERROR, fmi2Error,
+                   "%s: the FMU state holds the parameter %s = %.17g, which it cannot have", name,
+                   variable->name, content->values[vr]);
             return false;
         }
     }
-    for (int k = 0; k < AK_N_INPUTS; k++) {
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
             const double d = get_f64(bytes + OFFSET_INPUT_DERIVATIVES +
-                                     8 * (AK_MAX_INPUT_DERIVATIVE_ORDER * k + n));
+                                     8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n));
             if (!isfinite(d)) {
                 ak_log(instance, AK_LOG_ERROR, fmi2Error,
                        "%s: the FMU state holds a derivative of order %d of %s = %g, which is "
                        "not finite",
-                       name, n + 1, AK_VARIABLES[k].name, d);
+                       name, n + 1, AK_MODEL.variables[k].name, d);
                 return false;
             }
             content->input_derivatives[k][n] = d;
@@ -326,11 +342,11 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
     instance->time = content.time;
     instance->stop_time_defined = content.stop_time_defined;
     instance->stop_time = content.stop_time;
-    for (int vr = 0; vr < AK_N_VARIABLES; vr++) {
+    for (int vr = 0; vr < AK_MODEL.n_variables; vr++) {
         instance->values[vr] = content.values[vr];
     }
     instance->any_input_derivative = false;
-    for (int k = 0; k < AK_N_INPUTS; k++) {
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
             instance->input_derivatives[k][n] = content.input_derivatives[k][n];
             if (content.input_derivatives[k][n] != 0.0) {
@@ -338,8 +354,9 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
             }
         }
     }
-    /* The outputs are recomputed from the restored inputs, not trusted from the bytes. */
-    instance->outputs_stale = true;
+    /* The outputs are recomputed from the restored inputs and parameters, not trusted from the
+     * bytes (they hold the last valid ones, which stay if the evaluation fails). */
+    ak_instance_inputs_changed(instance);
     return fmi2OK;
 }
 
@@ -387,9 +404,9 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
     }
     if (size < AK_STATE_SIZE) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
-               "fmi2SerializeFMUstate: size = %zu is too small; the state needs %d bytes "
+               "fmi2SerializeFMUstate: size = %zu is too small; the state needs %zu bytes "
                "(fmi2SerializedFMUstateSize)",
-               size, AK_STATE_SIZE);
+               size, (size_t)AK_STATE_SIZE);
         return fmi2Error;
     }
     memcpy(serializedState, s->bytes, AK_STATE_SIZE);

@@ -6,7 +6,7 @@
 #include <stdbool.h>
 
 #include "fmi2Functions.h"
-#include "model_variables.h"
+#include "fmi2_model.h"
 
 /* The FMI 2.0 co-simulation and model-exchange states, one bit each so that a set of them is a
  * mask. Instantiated, InitializationMode and Terminated are common to both interfaces; the
@@ -37,7 +37,7 @@ typedef enum {
     AK_N_LOG_CATEGORIES
 } ak_log_category;
 
-typedef struct {
+typedef struct ak_instance_s {
     fmi2CallbackFunctions functions; /* a copy: the master's struct need not outlive the call */
     char *instance_name;
     bool logging_on_at_instantiation;
@@ -49,15 +49,22 @@ typedef struct {
     bool stop_time_defined;
     double stop_time;
 
-    /* All variable values, indexed by value reference. */
-    double values[AK_N_VARIABLES];
-    /* True when an input changed since the outputs were last computed. */
+    /* All variable values, indexed by value reference (fmi2_model.h). */
+    double values[AK_MAX_VARIABLES];
+    /* True when an input or parameter changed since the main output group was last computed;
+     * lazy_stale the same for the lazy group, which is computed only when one of its values
+     * is read. */
     bool outputs_stale;
+    bool lazy_stale;
+    /* Status of the last evaluation of the main group: on AK_EVAL_FAILED the outputs hold the
+     * values of the last successful one, and reading them returns fmi2Discard
+     * until an input changes. */
+    ak_eval_status evaluation_status;
     /* Co-simulation input derivatives: input_derivatives[k][n - 1] is the n-th time derivative
      * of input k at the current time, as given by fmi2SetRealInputDerivatives; zero when not
      * given. any_input_derivative is false when all are zero, which keeps fmi2SetReal and
      * fmi2DoStep free of any extra work for masters that do not use them. */
-    double input_derivatives[AK_N_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
+    double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
     bool any_input_derivative;
     /* How many times the core ran; reported in the logCalls trace. */
     unsigned long evaluations;
@@ -69,7 +76,21 @@ void ak_instance_reset(ak_instance *instance);
 /* Forgets every input derivative (the inputs are then held constant over a step). */
 void ak_instance_clear_input_derivatives(ak_instance *instance);
 
-/* Brings the outputs up to date with the inputs, running the core only if an input changed. */
-void ak_instance_update_outputs(ak_instance *instance);
+/* Brings the main output group up to date with the inputs, running the model only if an input
+ * or parameter changed; returns the status of the evaluation the outputs come from. */
+ak_eval_status ak_instance_update_outputs(ak_instance *instance);
+
+/* The same, and the lazy output group too. */
+ak_eval_status ak_instance_update_all_outputs(ak_instance *instance);
+
+/* The FMI status a read of outputs returns after an evaluation with that result: fmi2OK,
+ * fmi2Warning, or fmi2Discard when it failed (both interfaces; see fmi2_instance.c). */
+fmi2Status ak_instance_read_status(const ak_instance *instance, ak_eval_status status);
+
+/* Marks every output stale (an input or parameter changed). */
+static inline void ak_instance_inputs_changed(ak_instance *instance) {
+    instance->outputs_stale = true;
+    instance->lazy_stale = true;
+}
 
 #endif

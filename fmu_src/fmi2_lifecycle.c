@@ -43,11 +43,12 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                                (int)fmuType);
         return NULL;
     }
-    if (fmuGUID == NULL || strcmp(fmuGUID, AK_GUID) != 0) {
+    if (fmuGUID == NULL || strcmp(fmuGUID, AK_MODEL.guid) != 0) {
         ak_log_before_instance(functions, instanceName,
                                "fmi2Instantiate: fmuGUID = \"%s\" does not match the GUID "
-                               "\"%s\" of this FMU's binary",
-                               fmuGUID ? fmuGUID : "(null)", AK_GUID);
+                               "\"%s\" of this FMU's binary (%s)",
+                               fmuGUID ? fmuGUID : "(null)", AK_MODEL.guid,
+                               AK_MODEL.model_identifier);
         return NULL;
     }
 
@@ -165,7 +166,8 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
     if (!ak_call_allowed(instance, AK_FMI2_EXIT_INITIALIZATION_MODE)) {
         return fmi2Error;
     }
-    ak_instance_update_outputs(instance);
+    /* The outputs at the initial inputs; a failed evaluation is reported by the reads. */
+    (void)ak_instance_update_outputs(instance);
     instance->state = instance->fmu_type == fmi2ModelExchange ? AK_STATE_EVENT_MODE
                                                               : AK_STATE_STEP_COMPLETE;
     return fmi2OK;

@@ -1,5 +1,7 @@
 /* FMI 2.0 getters and setters. Every call checks all of its arguments before it touches a
- * value, so a rejected call changes nothing. */
+ * value, so a rejected call changes nothing. The variables are the model's (fmi2_model.h):
+ * Real inputs, Real outputs, and parameters of variability fixed (Real or Integer), which can be
+ * set only in Instantiated and InitializationMode. */
 #include <math.h>
 #include <stdint.h>
 
@@ -20,12 +22,25 @@ static bool arrays_given(const ak_instance *instance, ak_function function, size
     return true;
 }
 
+static const char *type_name(ak_type type) {
+    return type == AK_TYPE_INTEGER ? "Integer" : "Real";
+}
+
+/* A value reference of this model whose variable has the function's type. */
 static bool known_value_reference(const ak_instance *instance, ak_function function,
-                                  fmi2ValueReference vr, size_t index) {
-    if (vr >= AK_N_VARIABLES) {
+                                  fmi2ValueReference vr, size_t index, ak_type type) {
+    if (vr >= (fmi2ValueReference)AK_MODEL.n_variables) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: vr[%zu] = %u is not a value reference of this FMU (0 to %d)",
-               ak_function_name(function), index, vr, AK_N_VARIABLES - 1);
+               ak_function_name(function), index, vr, AK_MODEL.n_variables - 1);
+        return false;
+    }
+    const ak_variable *variable = &AK_MODEL.variables[vr];
+    if (variable->type != type) {
+        ak_log(instance, AK_LOG_ERROR, fmi2Error,
+               "%s: vr[%zu] = %u is %s, of type %s, not %s",
+               ak_function_name(function), index, vr, variable->name,
+               type_name(variable->type), type_name(type));
         return false;
     }
     return true;
@@ -46,24 +61,57 @@ static bool run_below(const fmi2ValueReference vr[], size_t nvr, size_t end) {
     return true;
 }
 
-/* The model has only Real variables: any value reference given to the Integer, Boolean and
- * String functions is unknown. */
-static fmi2Status reject_non_real(const ak_instance *instance, ak_function function,
-                                  const char *type_name, size_t nvr, const void *vr,
-                                  const void *values) {
-    if (!ak_call_allowed(instance, function)) {
-        return fmi2Error;
-    }
-    if (!arrays_given(instance, function, nvr, vr, values)) {
-        return fmi2Error;
-    }
-    if (nvr > 0) {
+/* A parameter may be set only before fmi2ExitInitializationMode (variability fixed); the value
+ * must be one the model accepts. */
+static bool parameter_settable(const ak_instance *instance, ak_function function, size_t index,
+                               const ak_variable *variable, double value) {
+    if ((instance->state & (AK_STATE_INSTANTIATED | AK_STATE_INITIALIZATION_MODE)) == 0) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
-               "%s: vr[0] = %u is not a value reference of this FMU, which has no %s variables",
-               ak_function_name(function), ((const fmi2ValueReference *)vr)[0], type_name);
-        return fmi2Error;
+               "%s: %s (vr[%zu] = %u) is a parameter of variability fixed: it can be set only "
+               "in Instantiated and InitializationMode, not in %s; no value set",
+               ak_function_name(function), variable->name, index, variable->value_reference,
+               ak_state_name(instance->state));
+        return false;
     }
-    return fmi2OK;
+    const char *why = AK_MODEL.check_parameter(variable, value);
+    if (why != NULL) {
+        ak_log(instance, AK_LOG_ERROR, fmi2Error, "%s: %s = %.17g (vr[%zu] = %u) %s; no value set",
+               ak_function_name(function), variable->name, value, index,
+               variable->value_reference, why);
+        return false;
+    }
+    return true;
+}
+
+static void store(ak_instance *instance, ak_function function, fmi2ValueReference vr,
+                  double value) {
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s: %s = %.17g", ak_function_name(function),
+               AK_MODEL.variables[vr].name, value);
+    }
+    /* Only a real change makes the outputs stale: masters often set unchanged inputs. */
+    if (instance->values[vr] != value) {
+        instance->values[vr] = value;
+        ak_instance_inputs_changed(instance);
+    }
+}
+
+/* Brings the outputs among vr up to date; the status the read returns. */
+static fmi2Status update_for_read(ak_instance *instance, const fmi2ValueReference vr[],
+                                  size_t nvr) {
+    bool main = false, lazy = false;
+    for (size_t i = 0; i < nvr; i++) {
+        if (vr[i] >= (fmi2ValueReference)AK_MODEL.n_inputs &&
+            vr[i] < (fmi2ValueReference)AK_MODEL.first_parameter) {
+            main = true;
+            lazy = lazy || vr[i] >= (fmi2ValueReference)AK_MODEL.first_lazy_output;
+        }
+    }
+    if (!main) {
+        return fmi2OK;
+    }
+    return ak_instance_read_status(instance, lazy ? ak_instance_update_all_outputs(instance)
+                                                  : ak_instance_update_outputs(instance));
 }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -73,24 +121,28 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         !arrays_given(instance, AK_FMI2_GET_REAL, nvr, vr, value)) {
         return fmi2Error;
     }
-    if (run_below(vr, nvr, AK_N_VARIABLES)) {
-        ak_instance_update_outputs(instance);
+    if (run_below(vr, nvr, (size_t)AK_MODEL.first_lazy_output)) {
+        /* The usual read: inputs and outputs of the main group, Real all of them. */
+        fmi2Status status = fmi2OK;
+        if (vr[0] + nvr > (size_t)AK_MODEL.n_inputs) {
+            status = ak_instance_read_status(instance, ak_instance_update_outputs(instance));
+        }
         const double *first = &instance->values[vr[0]];
         for (size_t i = 0; i < nvr; i++) {
             value[i] = first[i];
         }
-        return fmi2OK;
+        return status;
     }
     for (size_t i = 0; i < nvr; i++) {
-        if (!known_value_reference(instance, AK_FMI2_GET_REAL, vr[i], i)) {
+        if (!known_value_reference(instance, AK_FMI2_GET_REAL, vr[i], i, AK_TYPE_REAL)) {
             return fmi2Error;
         }
     }
-    ak_instance_update_outputs(instance);
+    const fmi2Status status = update_for_read(instance, vr, nvr);
     for (size_t i = 0; i < nvr; i++) {
         value[i] = instance->values[vr[i]];
     }
-    return fmi2OK;
+    return status;
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -101,18 +153,19 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
-        /* Inputs have the value references below AK_N_INPUTS (model_variables.h): a finite value
-         * for one of them, the usual case, needs no further check. */
-        if (vr[i] < AK_N_INPUTS && isfinite(value[i])) {
+        /* Inputs have the value references below n_inputs (fmi2_model.h): a finite value for one
+         * of them, the usual case, needs no further check. */
+        if (vr[i] < (fmi2ValueReference)AK_MODEL.n_inputs && isfinite(value[i])) {
             continue;
         }
-        if (!known_value_reference(instance, AK_FMI2_SET_REAL, vr[i], i)) {
+        if (!known_value_reference(instance, AK_FMI2_SET_REAL, vr[i], i, AK_TYPE_REAL)) {
             return fmi2Error;
         }
-        const ak_variable *variable = &AK_VARIABLES[vr[i]];
-        if (variable->causality != AK_CAUSALITY_INPUT) {
+        const ak_variable *variable = &AK_MODEL.variables[vr[i]];
+        if (variable->causality == AK_CAUSALITY_OUTPUT) {
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
-                   "fmi2SetReal: vr[%zu] = %u is %s, an %s: only inputs can be set; no value set",
+                   "fmi2SetReal: vr[%zu] = %u is %s, an %s: only inputs and parameters can be "
+                   "set; no value set",
                    i, vr[i], variable->name, ak_causality_name(variable->causality));
             return fmi2Error;
         }
@@ -122,19 +175,14 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
                    variable->name, value[i], i, vr[i]);
             return fmi2Error;
         }
+        if (variable->causality == AK_CAUSALITY_PARAMETER &&
+            !parameter_settable(instance, AK_FMI2_SET_REAL, i, variable, value[i])) {
+            return fmi2Error;
+        }
     }
-    const bool trace = ak_log_on(instance, AK_LOG_CALLS);
     for (size_t i = 0; i < nvr; i++) {
-        if (trace) {
-            ak_log(instance, AK_LOG_CALLS, fmi2OK, "fmi2SetReal: %s = %.17g",
-                   AK_VARIABLES[vr[i]].name, value[i]);
-        }
-        /* Only a real change makes the outputs stale: masters often set unchanged inputs. */
-        if (instance->values[vr[i]] != value[i]) {
-            instance->values[vr[i]] = value[i];
-            instance->outputs_stale = true;
-        }
-        if (instance->any_input_derivative) {
+        store(instance, AK_FMI2_SET_REAL, vr[i], value[i]);
+        if (instance->any_input_derivative && vr[i] < (fmi2ValueReference)AK_MODEL.n_inputs) {
             ak_forget_input_derivatives(instance, vr[i]);
         }
     }
@@ -143,30 +191,78 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           fmi2Integer value[]) {
-    return reject_non_real(c, AK_FMI2_GET_INTEGER, "Integer", nvr, vr, value);
-}
-
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                          fmi2Boolean value[]) {
-    return reject_non_real(c, AK_FMI2_GET_BOOLEAN, "Boolean", nvr, vr, value);
-}
-
-fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                         fmi2String value[]) {
-    return reject_non_real(c, AK_FMI2_GET_STRING, "String", nvr, vr, value);
+    ak_instance *instance = c;
+    if (!ak_call_allowed(instance, AK_FMI2_GET_INTEGER) ||
+        !arrays_given(instance, AK_FMI2_GET_INTEGER, nvr, vr, value)) {
+        return fmi2Error;
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        if (!known_value_reference(instance, AK_FMI2_GET_INTEGER, vr[i], i, AK_TYPE_INTEGER)) {
+            return fmi2Error;
+        }
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        value[i] = (fmi2Integer)instance->values[vr[i]];
+    }
+    return fmi2OK;
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Integer value[]) {
-    return reject_non_real(c, AK_FMI2_SET_INTEGER, "Integer", nvr, vr, value);
+    ak_instance *instance = c;
+    if (!ak_call_allowed(instance, AK_FMI2_SET_INTEGER) ||
+        !arrays_given(instance, AK_FMI2_SET_INTEGER, nvr, vr, value)) {
+        return fmi2Error;
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        if (!known_value_reference(instance, AK_FMI2_SET_INTEGER, vr[i], i, AK_TYPE_INTEGER) ||
+            !parameter_settable(instance, AK_FMI2_SET_INTEGER, i, &AK_MODEL.variables[vr[i]],
+                                (double)value[i])) {
+            return fmi2Error;
+        }
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        store(instance, AK_FMI2_SET_INTEGER, vr[i], (double)value[i]);
+    }
+    return fmi2OK;
+}
+
+/* The models have no Boolean and no String variables: any value reference given to those
+ * functions is unknown. */
+static fmi2Status reject_absent_type(const ak_instance *instance, ak_function function,
+                                     const char *type, size_t nvr, const void *vr,
+                                     const void *values) {
+    if (!ak_call_allowed(instance, function)) {
+        return fmi2Error;
+    }
+    if (!arrays_given(instance, function, nvr, vr, values)) {
+        return fmi2Error;
+    }
+    if (nvr > 0) {
+        ak_log(instance, AK_LOG_ERROR, fmi2Error,
+               "%s: vr[0] = %u is not a value reference of this FMU, which has no %s variables",
+               ak_function_name(function), ((const fmi2ValueReference *)vr)[0], type);
+        return fmi2Error;
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Boolean value[]) {
+    return reject_absent_type(c, AK_FMI2_GET_BOOLEAN, "Boolean", nvr, vr, value);
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         fmi2String value[]) {
+    return reject_absent_type(c, AK_FMI2_GET_STRING, "String", nvr, vr, value);
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Boolean value[]) {
-    return reject_non_real(c, AK_FMI2_SET_BOOLEAN, "Boolean", nvr, vr, value);
+    return reject_absent_type(c, AK_FMI2_SET_BOOLEAN, "Boolean", nvr, vr, value);
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                          const fmi2String value[]) {
-    return reject_non_real(c, AK_FMI2_SET_STRING, "String", nvr, vr, value);
+    return reject_absent_type(c, AK_FMI2_SET_STRING, "String", nvr, vr, value);
 }

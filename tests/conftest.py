@@ -15,6 +15,7 @@ from fmpy.logging import addLoggerProxy
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 FMU_PATH = ROOT / "dist" / "AngularKinematics.fmu"
+EULER_FMU_PATH = ROOT / "dist" / "EulerRates.fmu"
 BUILD_DIR = ROOT / "build"
 sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
 
@@ -63,12 +64,32 @@ def unzipdir(fmu_path, tmp_path_factory):
     return extract(fmu_path, unzipdir=str(tmp_path_factory.mktemp("fmu")))
 
 
-@pytest.fixture(scope="session")
-def c_table():
-    """The variable table the binary is built from, printed by the model_info tool."""
-    tool = BUILD_DIR / "model_info"
+def c_table_of(model):
+    """The variable table a model's binary is built from, printed by its model_info tool."""
+    tool = BUILD_DIR / f"model_info_{model}"
     assert tool.is_file(), f"{tool} is missing: build it first (bash scripts/build.sh)"
     return json.loads(subprocess.run([str(tool)], check=True, capture_output=True, text=True).stdout)
+
+
+@pytest.fixture(scope="session")
+def c_table():
+    return c_table_of("AngularKinematics")
+
+
+@pytest.fixture(scope="session")
+def euler_fmu_path():
+    assert EULER_FMU_PATH.is_file(), f"{EULER_FMU_PATH} is missing: build it first (bash scripts/build.sh)"
+    return str(EULER_FMU_PATH)
+
+
+@pytest.fixture(scope="session")
+def euler_model_description(euler_fmu_path):
+    return read_model_description(euler_fmu_path)
+
+
+@pytest.fixture(scope="session")
+def euler_unzipdir(euler_fmu_path, tmp_path_factory):
+    return extract(euler_fmu_path, unzipdir=str(tmp_path_factory.mktemp("euler_fmu")))
 
 
 class Instance:
@@ -118,13 +139,30 @@ class Instance:
         array = (ctypes.c_double * len(names))(*[values[n] for n in names])
         return self.call("fmi2SetReal", vr, len(names), array)
 
+    def set_integer(self, values):
+        """fmi2SetInteger by variable name; returns the status."""
+        names = list(values)
+        vr = (ctypes.c_uint * len(names))(*[self.vr[n] for n in names])
+        array = (ctypes.c_int * len(names))(*[values[n] for n in names])
+        return self.call("fmi2SetInteger", vr, len(names), array)
+
+    def get_integer(self, names):
+        return list(self.fmu.getInteger([self.vr[n] for n in names]))
+
     def get(self, names):
         """fmi2GetReal by variable name; returns the values as a numpy array (raises on error)."""
         return np.array(self.fmu.getReal([self.vr[n] for n in names]))
 
-    def initialize(self, start_time=0.0, stop_time=None, inputs=None):
+    def initialize(self, start_time=0.0, stop_time=None, inputs=None, parameters=None):
+        """parameters: {name: value}, Integer ones (Enumerations) set with fmi2SetInteger."""
         self.fmu.setupExperiment(startTime=start_time, stopTime=stop_time)
         self.fmu.enterInitializationMode()
+        types = {v.name: v.type for v in self.model_description.modelVariables}
+        for name, value in (parameters or {}).items():
+            if types[name] == "Real":
+                assert self.set({name: value}) == 0
+            else:
+                assert self.set_integer({name: value}) == 0
         if inputs:
             assert self.set(inputs) == 0
         self.fmu.exitInitializationMode()
@@ -143,6 +181,22 @@ def make_instance(unzipdir, model_description):
     def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
         instance = Instance(unzipdir, model_description, name=name, logging_on=logging_on,
                             fmi_type=fmi_type)
+        created.append(instance)
+        return instance
+
+    yield make
+    for instance in created:
+        instance.free()
+
+
+@pytest.fixture
+def make_euler_instance(euler_unzipdir, euler_model_description):
+    """Creates EulerRates instances, all freed at the end of the test."""
+    created = []
+
+    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
+        instance = Instance(euler_unzipdir, euler_model_description, name=name,
+                            logging_on=logging_on, fmi_type=fmi_type)
         created.append(instance)
         return instance
 

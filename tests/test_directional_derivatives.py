@@ -85,7 +85,9 @@ def test_zero_pattern_is_the_model_structure(make_instance, model_description):
         for output in range(9, 21):
             row = [directional(instance, [output], [j], [1.0])[1][0] for j in range(9)]
             nonzero = {j for j in range(9) if row[j] != 0.0}
-            assert nonzero == dependencies[output], reference.OUTPUT_NAMES[output - 9]
+            # ModelStructure lists the union over the sequences: body123 needs a subset of it
+            # (test_sequences_fmu.py checks every sequence).
+            assert nonzero <= dependencies[output], reference.OUTPUT_NAMES[output - 9]
 
 
 def test_follows_the_current_inputs(make_instance):
@@ -102,8 +104,8 @@ def test_follows_the_current_inputs(make_instance):
                          "expected an output"),
     ([9], [0, 12], [1.0, 1.0], "fmi2GetDirectionalDerivative: vKnown_ref[1] = 12 is omega_body[1], an "
                                "output; expected an input"),
-    ([21], [0], [1.0], "fmi2GetDirectionalDerivative: vUnknown_ref[0] = 21 is not a value reference of "
-                       "this FMU (0 to 20)"),
+    ([71], [0], [1.0], "fmi2GetDirectionalDerivative: vUnknown_ref[0] = 71 is not a value reference of "
+                       "this FMU (0 to 70)"),
     ([9], [0], [float("nan")], "fmi2GetDirectionalDerivative: dvKnown[0] = nan (seed of theta[1]) is "
                                "not finite"),
 ])

@@ -50,18 +50,32 @@ def page(fmu_path):
 
 def test_documentation_has_the_sections(page):
     parser, _ = page
-    assert parser.headings == ["What it computes", "Variables", "FMI behaviour", "Capabilities"]
+    assert parser.headings == ["What it computes", "Rotation sequences and conventions", "Variables",
+                               "EulerRates: the inverse map", "FMI behaviour", "Capabilities"]
 
 
-def test_documentation_lists_every_variable_with_its_unit(page, model_description):
+@pytest.mark.parametrize("which", ["AngularKinematics", "EulerRates"])
+def test_documentation_lists_every_variable_with_its_unit(which, page, model_description,
+                                                          euler_model_description):
+    """Both models' variables are in the page (AngularKinematics' table first)."""
     parser, _ = page
     cells = parser.cells
-    for variable in model_description.modelVariables:
-        base, index = re.fullmatch(r"(\w+)\[(\d)\]", variable.name).groups()
-        row = cells.index(f"{base}[1..3]")
-        assert cells[row + 3] == variable.declaredType.unit
-        assert cells[row + 4] == variable.declaredType.displayUnit
-        assert str(variable.valueReference) in cells[row + 5].split(", ")
+    description = model_description if which == "AngularKinematics" else euler_model_description
+    start = 0 if which == "AngularKinematics" else cells.index("omega[1..3]") - 7  # its theta row
+    for variable in description.modelVariables:
+        vector = re.fullmatch(r"(\w+)\[\d\]", variable.name)
+        matrix = re.fullmatch(r"(\w+)\[\d,\d\]", variable.name)
+        label = (f"{vector.group(1)}[1..{4 if vector.group(1) == 'q' else 3}]" if vector
+                 else f"{matrix.group(1)}[1..3,1..3]" if matrix else variable.name)
+        row = cells.index(label, start)
+        assert cells[row + 3] == (variable.declaredType.unit or "")
+        assert cells[row + 4] == (variable.declaredType.displayUnit or "")
+        references = cells[row + 5]
+        if " .. " in references:
+            first, last = map(int, references.split(" .. "))
+            assert first <= variable.valueReference <= last
+        else:
+            assert str(variable.valueReference) in references.split(", ")
 
 
 def test_documentation_states_the_capability_flags(page, model_description):
@@ -77,8 +91,8 @@ def test_documentation_states_the_capability_flags(page, model_description):
 
 def test_documentation_figures_are_in_the_fmu(page):
     parser, names = page
-    assert parser.images == ["tumbling_body.png", "../model.png"]
-    assert {"documentation/tumbling_body.png", "model.png"} <= names
+    assert parser.images == ["tumbling_body.png", "../model.png", "models.svg"]
+    assert {"documentation/tumbling_body.png", "model.png", "documentation/models.svg"} <= names
 
 
 def test_icon_and_figure_are_png_images(root):

@@ -14,7 +14,7 @@ import reference
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
 OTHER = dict(zip(reference.INPUT_NAMES, [-1.0, 1.5, 0.2, 4.0, 0.1, -0.3, 0.0, 9.0, -2.0]))
 ALL = reference.INPUT_NAMES + reference.OUTPUT_NAMES
-SIZE = 404
+SIZE = 804  # 92 + 8 x 71 values + 16 x 9 inputs (format version 2)
 GUID = b"{c3391885-ba93-4824-bb36-df39703b63ee}"
 
 
@@ -90,16 +90,17 @@ def test_layout_is_the_documented_one(make_instance):
     instance = running(make_instance)
     data = instance.fmu.serializeFMUstate(instance.fmu.getFMUstate())
     assert data[0:8] == b"AKinFMUs"
-    assert struct.unpack_from("<II", data, 8) == (1, SIZE)
+    assert struct.unpack_from("<II", data, 8) == (2, SIZE)
     assert data[16:56] == GUID + b"\0\0"
     assert struct.unpack_from("<II", data, 56) == (1, 1 << 2)  # co-simulation, StepComplete
     assert struct.unpack_from("<ddII", data, 64) == (0.2, 10.0, 1, 0)
-    values = struct.unpack_from("<21d", data, 88)
-    assert np.array_equal(values, instance.get(ALL))
-    derivatives = np.array(struct.unpack_from("<18d", data, 256)).reshape(9, 2)
+    values = struct.unpack_from("<71d", data, 88)
+    assert np.array_equal(values[:21], instance.get(ALL))
+    assert values[70] == 1.0  # the parameter sequence: body123
+    derivatives = np.array(struct.unpack_from("<18d", data, 656)).reshape(9, 2)
     assert derivatives[0, 0] == 0.5 and derivatives[4, 0] == -1.0 and derivatives[8, 0] == 2.0
     assert np.count_nonzero(derivatives) == 3
-    assert struct.unpack_from("<I", data, 400)[0] == zlib.crc32(data[:400])  # IEEE CRC-32
+    assert struct.unpack_from("<I", data, 800)[0] == zlib.crc32(data[:800])  # IEEE CRC-32
 
 
 def test_state_objects_are_reused_when_passed_back(make_instance):
@@ -179,22 +180,25 @@ def bad_strings(data):
                        "(too short for the header)"),
         "header only": (data[:12], "fmi2DeSerializeFMUstate: the 12 bytes are not an AngularKinematics "
                                    "FMU state (too short for the header)"),
-        "truncated": (data[:-1], "fmi2DeSerializeFMUstate: the FMU state is 403 bytes long and declares "
-                                 "404 bytes; format version 1 has 404 bytes (truncated or extended)"),
-        "extended": (data + b"\0", "fmi2DeSerializeFMUstate: the FMU state is 405 bytes long and "
-                                   "declares 404 bytes; format version 1 has 404 bytes (truncated or "
-                                   "extended)"),
-        "foreign": (b"PK\x03\x04" + bytes(400), "fmi2DeSerializeFMUstate: the 404 bytes are not an "
+        "truncated": (data[:-1], "fmi2DeSerializeFMUstate: the FMU state is 803 bytes long and declares "
+                                 "804 bytes; format version 2 of AngularKinematics has 804 bytes "
+                                 "(truncated or extended)"),
+        "extended": (data + b"\0", "fmi2DeSerializeFMUstate: the FMU state is 805 bytes long and "
+                                   "declares 804 bytes; format version 2 of AngularKinematics has 804 "
+                                   "bytes (truncated or extended)"),
+        "foreign": (b"PK\x03\x04" + bytes(800), "fmi2DeSerializeFMUstate: the 804 bytes are not an "
                                                 "AngularKinematics FMU state (wrong magic bytes)"),
         "corrupt": (bytes(flipped), "fmi2DeSerializeFMUstate: the FMU state is corrupt: its CRC-32 is "
                                     "0x%08x, the bytes give 0x%08x" % (
-                                        struct.unpack_from("<I", data, 400)[0],
-                                        zlib.crc32(bytes(flipped[:400])))),
-        "version 2": (forged(data, 8, "<I", 2), "fmi2DeSerializeFMUstate: FMU state format version 2 "
-                                                "is not supported (this binary reads version 1)"),
+                                        struct.unpack_from("<I", data, 800)[0],
+                                        zlib.crc32(bytes(flipped[:800])))),
+        "version 1": (forged(data, 8, "<I", 1), "fmi2DeSerializeFMUstate: FMU state format version 1 "
+                                                "is not supported (this binary reads version 2)"),
+        "version 3": (forged(data, 8, "<I", 3), "fmi2DeSerializeFMUstate: FMU state format version 3 "
+                                                "is not supported (this binary reads version 2)"),
         "other GUID": (reseal(data[:16] + b"{00000000-0000-0000-0000-000000000000}\0\0" + data[56:]),
                        'fmi2DeSerializeFMUstate: the FMU state is of an FMU with GUID '
-                       '"{00000000-0000-0000-0000-000000000000}", not this one\'s '
+                       '"{00000000-0000-0000-0000-000000000000}", not this one\'s (AngularKinematics) '
                        '"{c3391885-ba93-4824-bb36-df39703b63ee}"'),
         "step in progress": (forged(data, 60, "<I", 1 << 3),
                              "fmi2DeSerializeFMUstate: the FMU state holds an impossible header "
@@ -202,11 +206,18 @@ def bad_strings(data):
         "not finite": (forged(data, 88 + 8 * 4, "<d", float("inf")),
                        "fmi2DeSerializeFMUstate: the FMU state holds theta_dot[2] = inf, which is "
                        "not finite"),
+        "bad sequence": (forged(data, 88 + 8 * 70, "<d", 25.0),
+                         "fmi2DeSerializeFMUstate: the FMU state holds the parameter sequence = 25, "
+                         "which it cannot have"),
+        "fractional sequence": (forged(data, 88 + 8 * 70, "<d", 2.5),
+                                "fmi2DeSerializeFMUstate: the FMU state holds the parameter sequence "
+                                "= 2.5, which it cannot have"),
     }
 
 
 @pytest.mark.parametrize("kind", ["empty", "header only", "truncated", "extended", "foreign", "corrupt",
-                                  "version 2", "other GUID", "step in progress", "not finite"])
+                                  "version 1", "version 3", "other GUID", "step in progress",
+                                  "not finite", "bad sequence", "fractional sequence"])
 def test_bad_bytes_are_refused_and_change_nothing(kind, make_instance):
     data = good_bytes(make_instance)
     bad, message = bad_strings(data)[kind]
@@ -254,7 +265,7 @@ def test_null_and_stray_arguments(make_instance):
         "fmi2SetFMUstate: FMUstate given is not an FMU state made by fmi2GetFMUstate or "
         "fmi2DeSerializeFMUstate of this FMU (or it was freed)",
         "fmi2SerializedFMUstateSize: size is NULL",
-        "fmi2SerializeFMUstate: size = 403 is too small; the state needs 404 bytes "
+        "fmi2SerializeFMUstate: size = 803 is too small; the state needs 804 bytes "
         "(fmi2SerializedFMUstateSize)",
         "fmi2FreeFMUstate: FMUstate is NULL",
     ]

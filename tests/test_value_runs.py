@@ -44,11 +44,11 @@ def test_every_order_gives_the_same_values(instance):
             assert get_raw(instance, run) == (0, [in_order[vr] for vr in run])
 
 
-@pytest.mark.parametrize("vrs", [[20, 21], [19, 20, 21, 22], [2**32 - 1], [2**32 - 1, 0]])
+@pytest.mark.parametrize("vrs", [[69, 71], [68, 69, 71, 72], [2**32 - 1], [2**32 - 1, 0]])
 def test_run_past_the_last_reference_is_refused(vrs, instance):
     status, values = get_raw(instance, vrs)
     assert status == 3
-    bad = next(vr for vr in vrs if vr > 20)
+    bad = next(vr for vr in vrs if vr > 70)
     assert any(f"= {bad} is not a value reference" in m for m in instance.errors())
     assert values == [-7.0] * len(vrs)  # nothing written
 
@@ -63,3 +63,11 @@ def test_set_in_any_order_then_one_bad_value_changes_nothing(vrs, instance):
     assert set_raw(instance, vrs, values) == 3
     assert "is not finite" in instance.errors()[-1]
     assert np.array_equal(instance.get(reference.INPUT_NAMES + reference.OUTPUT_NAMES), expected)
+
+
+def test_a_run_into_the_integer_parameter_is_refused(instance):
+    """vr 70 is the Enumeration parameter sequence: not readable through fmi2GetReal."""
+    status, values = get_raw(instance, [68, 69, 70])
+    assert status == 3
+    assert instance.errors()[-1] == "fmi2GetReal: vr[2] = 70 is sequence, of type Integer, not Real"
+    assert values == [-7.0] * 3

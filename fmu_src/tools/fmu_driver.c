@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "fmi2FunctionTypes.h"
-#include "model_variables.h"
+#include "model_angular_kinematics.h"
 
 #ifdef _WIN32
 #include <windows.h>
@@ -124,7 +124,7 @@ int main(int argc, char **argv) {
     printf("fmi2GetVersion %s\n", api.get_version());
 
     const fmi2CallbackFunctions callbacks = {logger, allocate, free, NULL, NULL};
-    fmi2Component instance = api.instantiate("driver", fmi2CoSimulation, AK_GUID, "", &callbacks,
+    fmi2Component instance = api.instantiate("driver", fmi2CoSimulation, AK_ANGULAR_KINEMATICS_GUID, "", &callbacks,
                                              fmi2False, fmi2False);
     if (instance == NULL) {
         fprintf(stderr, "fmu_driver: fmi2Instantiate failed\n");
@@ -135,26 +135,26 @@ int main(int argc, char **argv) {
                  api.enter_initialization_mode(instance) != fmi2OK ||
                  api.exit_initialization_mode(instance) != fmi2OK;
 
-    fmi2ValueReference inputs[AK_N_INPUTS], outputs[AK_N_VARIABLES - AK_N_INPUTS];
-    for (int i = 0; i < AK_N_VARIABLES; i++) {
-        if (i < AK_N_INPUTS) {
+    fmi2ValueReference inputs[AK_AK_N_INPUTS], outputs[AK_VR_R - AK_AK_N_INPUTS];
+    for (int i = 0; i < AK_VR_R; i++) {
+        if (i < AK_AK_N_INPUTS) {
             inputs[i] = (fmi2ValueReference)i;
         } else {
-            outputs[i - AK_N_INPUTS] = (fmi2ValueReference)i;
+            outputs[i - AK_AK_N_INPUTS] = (fmi2ValueReference)i;
         }
     }
     for (int k = 0; k < steps && !failed; k++) {
-        double u[AK_N_INPUTS], y[AK_N_VARIABLES - AK_N_INPUTS];
-        for (int j = 0; j < AK_N_INPUTS; j++) {
+        double u[AK_AK_N_INPUTS], y[AK_VR_R - AK_AK_N_INPUTS];
+        for (int j = 0; j < AK_AK_N_INPUTS; j++) {
             u[j] = input_value(k, j);
         }
-        failed = api.set_real(instance, inputs, AK_N_INPUTS, u) != fmi2OK ||
-                 api.get_real(instance, outputs, AK_N_VARIABLES - AK_N_INPUTS, y) != fmi2OK;
+        failed = api.set_real(instance, inputs, AK_AK_N_INPUTS, u) != fmi2OK ||
+                 api.get_real(instance, outputs, AK_VR_R - AK_AK_N_INPUTS, y) != fmi2OK;
         if (failed) {
             break;
         }
         printf("%d", k);
-        for (int j = 0; j < AK_N_VARIABLES - AK_N_INPUTS; j++) {
+        for (int j = 0; j < AK_VR_R - AK_AK_N_INPUTS; j++) {
             printf(" %.17g", y[j]);
         }
         printf("\n");

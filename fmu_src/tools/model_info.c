@@ -1,23 +1,30 @@
-/* Prints the variable table, the GUID and the model identifier as JSON, so that the tests can
- * compare modelDescription.xml with what the binary is built from. */
+/* Prints the model descriptor's identity and variable table as JSON, so that the tests can
+ * compare a modelDescription.xml with what its binary is built from. Built once per model
+ * (model_info_AngularKinematics, model_info_EulerRates), with that model's sources. */
 #include <stdio.h>
 
-#include "model_variables.h"
+#include "fmi2_model.h"
+
+static const char *type_name(ak_type type) {
+    return type == AK_TYPE_INTEGER ? "Integer" : "Real";
+}
 
 int main(void) {
-    printf("{\n  \"modelIdentifier\": \"%s\",\n  \"guid\": \"%s\",\n  \"variables\": [\n",
-           AK_MODEL_IDENTIFIER, AK_GUID);
-    for (int i = 0; i < AK_N_VARIABLES; i++) {
-        const ak_variable *v = &AK_VARIABLES[i];
+    printf("{\n  \"modelIdentifier\": \"%s\",\n  \"guid\": \"%s\",\n  \"nInputs\": %d,\n"
+           "  \"firstLazyOutput\": %d,\n  \"firstParameter\": %d,\n  \"variables\": [\n",
+           AK_MODEL.model_identifier, AK_MODEL.guid, AK_MODEL.n_inputs,
+           AK_MODEL.first_lazy_output, AK_MODEL.first_parameter);
+    for (int i = 0; i < AK_MODEL.n_variables; i++) {
+        const ak_variable *v = &AK_MODEL.variables[i];
         printf("    {\"valueReference\": %u, \"name\": \"%s\", \"causality\": \"%s\", "
-               "\"declaredType\": \"%s\", \"unit\": \"%s\", \"start\": %.17g, "
-               "\"description\": \"%s\", \"dependencies\": [",
-               v->value_reference, v->name, ak_causality_name(v->causality), v->declared_type,
-               v->unit, v->start, v->description);
+               "\"type\": \"%s\", \"declaredType\": \"%s\", \"unit\": \"%s\", \"start\": %.17g, "
+               "\"min\": %.17g, \"max\": %.17g, \"description\": \"%s\", \"dependencies\": [",
+               v->value_reference, v->name, ak_causality_name(v->causality), type_name(v->type),
+               v->declared_type, v->unit, v->start, v->min, v->max, v->description);
         for (size_t d = 0; d < v->n_dependencies; d++) {
             printf("%s%u", d == 0 ? "" : ", ", v->dependencies[d]);
         }
-        printf("]}%s\n", i + 1 < AK_N_VARIABLES ? "," : "");
+        printf("]}%s\n", i + 1 < AK_MODEL.n_variables ? "," : "");
     }
     printf("  ]\n}\n");
     return 0;

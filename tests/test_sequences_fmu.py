@@ -1,0 +1,160 @@
+"""AngularKinematics for all 24 rotation sequences, through the FMU (fmpy), against the independent
+sympy reference (reference_sequences.py): the 61 outputs, the dependencies <ModelStructure> lists,
+the exact directional derivatives and the output derivatives.
+
+Errors are scaled by the natural size of the terms an output sums: sum|theta_dot| for omega and
+W_dot, sum|theta_ddot| + (sum|theta_dot|)^2 for alpha, 1 for R, q and W."""
+import ctypes
+
+import numpy as np
+import pytest
+
+import reference_sequences as reference
+from sequence_names import SEQUENCES
+
+INPUTS = reference.KINEMATICS_INPUTS
+OUTPUTS = (reference.KINEMATICS_OUTPUTS[:21] + [f"q[{k}]" for k in (1, 2, 3, 4)] +
+           reference.KINEMATICS_OUTPUTS[21:])
+TOLERANCE = 1e-14
+RNG_SEED = 20261121
+
+
+def scales(inputs):
+    theta_dot, theta_ddot = np.asarray(inputs[3:6]), np.asarray(inputs[6:9])
+    omega = np.abs(theta_dot).sum()
+    alpha = np.abs(theta_ddot).sum() + omega ** 2
+    return np.array([omega] * 6 + [alpha] * 6 + [1.0] * 9 + [1.0] * 4 + [1.0] * 18 + [omega] * 18)
+
+
+def singular_value(name):
+    return 0.0 if name[-3] == name[-1] else np.pi / 2
+
+
+def states(name, count, rng):
+    """Random states: a third generic, a third near the sequence's singular theta2, a third at it."""
+    theta = rng.uniform(-np.pi, np.pi, (count, 3))
+    third = count // 3
+    offsets = 10.0 ** rng.uniform(-12, -1, third) * rng.choice([-1, 1], third)
+    theta[third:2 * third, 1] = rng.choice([-1, 1], third) * singular_value(name) + offsets
+    theta[2 * third:, 1] = rng.choice([-1, 1], count - 2 * third) * singular_value(name)
+    rates = 10.0 ** rng.uniform(-3, 3, (count, 6)) * rng.uniform(-1, 1, (count, 6))
+    return np.hstack([theta, rates])
+
+
+def instance_for(make_instance, name, **kwargs):
+    instance = make_instance(**kwargs)
+    instance.initialize(parameters={"sequence": SEQUENCES.index(name) + 1})
+    return instance
+
+
+@pytest.mark.parametrize("name", SEQUENCES)
+def test_outputs_match_reference(name, make_instance, report):
+    rng = np.random.default_rng([RNG_SEED, SEQUENCES.index(name)])
+    instance = instance_for(make_instance, name)
+    assert instance.get_integer(["sequence"]) == [SEQUENCES.index(name) + 1]
+    worst = np.zeros(len(OUTPUTS))
+    for inputs in states(name, 30, rng):
+        assert instance.set(dict(zip(INPUTS, inputs))) == 0
+        got = instance.get(OUTPUTS)
+        expected = reference.fmu_outputs(name, inputs)
+        worst = np.maximum(worst, np.abs(got - expected) / scales(inputs))
+    groups = {"omega": worst[:6], "alpha": worst[6:12], "R": worst[12:21], "q": worst[21:25],
+              "W": worst[25:43], "W_dot": worst[43:]}
+    report(f"30 states: worst scaled error " +
+           ", ".join(f"{k} {v.max():.1e}" for k, v in groups.items()))
+    for output, error in zip(OUTPUTS, worst):
+        assert error <= TOLERANCE, f"{name} {output}: scaled error {error:.3e}"
+
+
+def test_body123_is_the_hand_written_fast_path_bit_for_bit(make_instance):
+    """The default runs ak_angular_kinematics_123, space123 the general core: for body123 the general
+    core is bit-identical (test_kinematics_general.c), so the FMU's body123 equals the hand-written
+    core; here: body123 through the FMU is reproduced by no other sequence, and its omega/alpha are
+    those of the pre-existing reference (reference.py, 1-2-3 only)."""
+    import reference as reference_123
+    instance = instance_for(make_instance, "body123")
+    inputs = [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]
+    instance.set(dict(zip(INPUTS, inputs)))
+    got = instance.get(OUTPUTS[:12])
+    assert np.allclose(got, reference_123.outputs(inputs), rtol=0, atol=1e-14)
+
+
+def test_each_output_moves_only_with_its_listed_inputs_and_the_union_is_exact(make_instance,
+                                                                          model_description):
+    """For every sequence, changing an input changes only outputs that list it; over all sequences,
+    every listed dependency is exercised by some sequence (the union is exact). Any change of the
+    double counts, so no dependency can hide in rounding."""
+    listed = {u.variable.name: {d.name for d in u.dependencies} for u in model_description.outputs}
+    rng = np.random.default_rng(RNG_SEED)
+    seen = {output: set() for output in OUTPUTS}
+    for name in SEQUENCES:
+        instance = instance_for(make_instance, name)
+        for _ in range(2):
+            base = dict(zip(INPUTS, rng.uniform(-2, 2, 9)))
+            instance.set(base)
+            before = instance.get(OUTPUTS)
+            for input_name in INPUTS:
+                instance.set({input_name: base[input_name] + 0.25})
+                after = instance.get(OUTPUTS)
+                instance.set({input_name: base[input_name]})
+                for output, b, a in zip(OUTPUTS, before, after):
+                    if a != b:
+                        assert input_name in listed[output], f"{name}: {output} moves with {input_name}"
+                        seen[output].add(input_name)
+        instance.free()
+    assert seen == listed
+
+
+def directional(instance, unknowns, knowns, seed):
+    n, m = len(unknowns), len(knowns)
+    result = (ctypes.c_double * n)()
+    status = instance.call("fmi2GetDirectionalDerivative", (ctypes.c_uint * n)(*unknowns), n,
+                           (ctypes.c_uint * m)(*knowns), m, (ctypes.c_double * m)(*seed), result)
+    return status, np.array(result)
+
+
+@pytest.mark.parametrize("name", SEQUENCES)
+def test_directional_derivatives_are_the_exact_jacobian(name, make_instance, report):
+    """Every entry of d output / d input, all 61 outputs x 9 inputs, against central differences on
+    the 40-digit reference; scaled by the output's scale (per unit of input)."""
+    rng = np.random.default_rng([RNG_SEED, 7, SEQUENCES.index(name)])
+    instance = instance_for(make_instance, name)
+    outputs = [instance.vr[o] for o in OUTPUTS]
+    worst = 0.0
+    for _ in range(2):
+        inputs = np.hstack([rng.uniform(-np.pi, np.pi, 3), rng.uniform(-2, 2, 6)])
+        instance.set(dict(zip(INPUTS, inputs)))
+        expected = reference.fmu_jacobian(name, inputs)
+        got = np.empty_like(expected)
+        for k in range(9):
+            status, got[:, k] = directional(instance, outputs, [k], [1.0])
+            assert status == 0
+        scale = np.maximum(scales(inputs), 1.0)[:, None] * (1 + np.abs(inputs).max())
+        worst = max(worst, (np.abs(got - expected) / scale).max())
+        # A seed combines the columns linearly.
+        seed = rng.uniform(-1, 1, 9)
+        status, combined = directional(instance, outputs, list(range(9)), list(seed))
+        assert status == 0 and np.allclose(combined, got @ seed, rtol=1e-13, atol=1e-13)
+    report(f"2 states x 61 x 9 entries: worst scaled error {worst:.1e}")
+    assert worst <= TOLERANCE
+
+
+@pytest.mark.parametrize("name", ["body123", "body321", "body313", "space123", "space321", "space232"])
+def test_output_derivatives_are_the_chain_rule_of_the_reference(name, make_instance):
+    """d y / dt = J (theta_dot, theta_ddot, theta_dddot) for every output, theta_dddot given as the
+    first derivative of theta_ddot; d omega / dt is alpha itself."""
+    instance = instance_for(make_instance, name)
+    inputs = np.array([0.4, 1.1, -2.0, 0.7, -0.3, 1.9, 0.2, -1.2, 0.6])
+    third = np.array([0.9, -0.4, 1.3])
+    instance.set(dict(zip(INPUTS, inputs)))
+    vr = (ctypes.c_uint * 3)(*[instance.vr[f"theta_ddot[{k}]"] for k in (1, 2, 3)])
+    assert instance.call("fmi2SetRealInputDerivatives", vr, 3, (ctypes.c_int * 3)(1, 1, 1),
+                         (ctypes.c_double * 3)(*third)) == 0
+    outputs = [instance.vr[o] for o in OUTPUTS]
+    got = (ctypes.c_double * len(outputs))()
+    assert instance.call("fmi2GetRealOutputDerivatives", (ctypes.c_uint * len(outputs))(*outputs),
+                         len(outputs), (ctypes.c_int * len(outputs))(*[1] * len(outputs)), got) == 0
+    expected = reference.fmu_jacobian(name, inputs) @ np.hstack([inputs[3:], third])
+    scale = np.maximum(scales(inputs), 1.0) * 10
+    assert (np.abs(np.array(got) - expected) / scale).max() <= TOLERANCE
+    assert np.array_equal(np.array(got)[:6], instance.get(OUTPUTS[6:12]))
