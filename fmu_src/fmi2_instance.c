@@ -50,6 +50,9 @@ ak_eval_status ak_instance_update_all_outputs(ak_instance *instance) {
     if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
         AK_MODEL.evaluate_lazy(instance);
         instance->lazy_stale = false;
+        if (ak_log_on(instance, AK_LOG_CALLS)) {
+            ak_log(instance, AK_LOG_CALLS, fmi2OK, "lazy outputs evaluated");
+        }
     }
     return status;
 }

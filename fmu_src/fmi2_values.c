@@ -83,9 +83,9 @@ static bool parameter_settable(const ak_instance *instance, ak_function function
     return true;
 }
 
-static void store(ak_instance *instance, ak_function function, fmi2ValueReference vr,
+static void store(ak_instance *instance, ak_function function, bool trace, fmi2ValueReference vr,
                   double value) {
-    if (ak_log_on(instance, AK_LOG_CALLS)) {
+    if (trace) {
         ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s: %s = %.17g", ak_function_name(function),
                AK_MODEL.variables[vr].name, value);
     }
@@ -96,17 +96,9 @@ static void store(ak_instance *instance, ak_function function, fmi2ValueReferenc
     }
 }
 
-/* Brings the outputs among vr up to date; the status the read returns. */
-static fmi2Status update_for_read(ak_instance *instance, const fmi2ValueReference vr[],
-                                  size_t nvr) {
-    bool main = false, lazy = false;
-    for (size_t i = 0; i < nvr; i++) {
-        if (vr[i] >= (fmi2ValueReference)AK_MODEL.n_inputs &&
-            vr[i] < (fmi2ValueReference)AK_MODEL.first_parameter) {
-            main = true;
-            lazy = lazy || vr[i] >= (fmi2ValueReference)AK_MODEL.first_lazy_output;
-        }
-    }
+/* Brings the outputs read up to date (main: some output of the main group or the lazy group is
+ * read; lazy: some of the lazy group); the status the read returns. */
+static fmi2Status update_for_read(ak_instance *instance, bool main, bool lazy) {
     if (!main) {
         return fmi2OK;
     }
@@ -133,12 +125,19 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         }
         return status;
     }
+    bool main = false, lazy = false;
     for (size_t i = 0; i < nvr; i++) {
         if (!known_value_reference(instance, AK_FMI2_GET_REAL, vr[i], i, AK_TYPE_REAL)) {
             return fmi2Error;
         }
+        /* Real variables: inputs, outputs, and Real parameters past first_parameter. */
+        if (vr[i] >= (fmi2ValueReference)AK_MODEL.n_inputs &&
+            vr[i] < (fmi2ValueReference)AK_MODEL.first_parameter) {
+            main = true;
+            lazy = lazy || vr[i] >= (fmi2ValueReference)AK_MODEL.first_lazy_output;
+        }
     }
-    const fmi2Status status = update_for_read(instance, vr, nvr);
+    const fmi2Status status = update_for_read(instance, main, lazy);
     for (size_t i = 0; i < nvr; i++) {
         value[i] = instance->values[vr[i]];
     }
@@ -180,8 +179,9 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
             return fmi2Error;
         }
     }
+    const bool trace = ak_log_on(instance, AK_LOG_CALLS);
     for (size_t i = 0; i < nvr; i++) {
-        store(instance, AK_FMI2_SET_REAL, vr[i], value[i]);
+        store(instance, AK_FMI2_SET_REAL, trace, vr[i], value[i]);
         if (instance->any_input_derivative && vr[i] < (fmi2ValueReference)AK_MODEL.n_inputs) {
             ak_forget_input_derivatives(instance, vr[i]);
         }
@@ -221,8 +221,9 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
             return fmi2Error;
         }
     }
+    const bool trace = ak_log_on(instance, AK_LOG_CALLS);
     for (size_t i = 0; i < nvr; i++) {
-        store(instance, AK_FMI2_SET_INTEGER, vr[i], (double)value[i]);
+        store(instance, AK_FMI2_SET_INTEGER, trace, vr[i], (double)value[i]);
     }
     return fmi2OK;
 }

@@ -158,3 +158,61 @@ def test_output_derivatives_are_the_chain_rule_of_the_reference(name, make_insta
     scale = np.maximum(scales(inputs), 1.0) * 10
     assert (np.abs(np.array(got) - expected) / scale).max() <= TOLERANCE
     assert np.array_equal(np.array(got)[:6], instance.get(OUTPUTS[6:12]))
+
+
+def test_sequence_parameter_values_and_states(make_instance):
+    instance = make_instance()
+    assert instance.set_integer({"sequence": 25}) == 3  # in Instantiated: checked all the same
+    instance.fmu.setupExperiment(startTime=0.0)
+    instance.fmu.enterInitializationMode()
+    assert instance.get_integer(["sequence"]) == [1]  # the default, body123
+    assert instance.set_integer({"sequence": 0}) == 3
+    assert instance.set_integer({"sequence": -2147483648}) == 3
+    assert instance.set({"sequence": 2.0}) == 3  # an Integer (Enumeration), not a Real
+    assert instance.errors() == [
+        "fmi2SetInteger: sequence = 25 (vr[0] = 70) is not an item of the Enumeration Sequence "
+        "(1 body123 .. 24 space323); no value set",
+        "fmi2SetInteger: sequence = 0 (vr[0] = 70) is not an item of the Enumeration Sequence "
+        "(1 body123 .. 24 space323); no value set",
+        "fmi2SetInteger: sequence = -2147483648 (vr[0] = 70) is not an item of the Enumeration "
+        "Sequence (1 body123 .. 24 space323); no value set",
+        "fmi2SetReal: vr[0] = 70 is sequence, of type Integer, not Real"]
+    assert instance.get_integer(["sequence"]) == [1]
+    assert instance.set_integer({"sequence": SEQUENCES.index("space313") + 1}) == 0
+    instance.fmu.exitInitializationMode()
+    assert instance.set_integer({"sequence": 1}) == 3
+    assert instance.errors()[-1] == (
+        "fmi2SetInteger: sequence (vr[0] = 70) is a parameter of variability fixed: it can be set "
+        "only in Instantiated and InitializationMode, not in StepComplete; no value set")
+    assert instance.get_integer(["sequence"]) == [SEQUENCES.index("space313") + 1]
+    inputs = [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]
+    instance.set(dict(zip(INPUTS, inputs)))
+    assert np.allclose(instance.get(OUTPUTS), reference.fmu_outputs("space313", inputs), atol=1e-14)
+    instance.fmu.reset()
+    instance.fmu.setupExperiment(startTime=0.0)
+    instance.fmu.enterInitializationMode()
+    assert instance.get_integer(["sequence"]) == [1]
+
+
+def test_rotation_outputs_are_computed_only_when_read(make_instance):
+    """The 49 rotation outputs are a lazy group: reading omega and alpha never computes them; the
+    first read of one of them after an input changed computes them once."""
+    instance = make_instance(logging_on=True)
+    instance.initialize(parameters={"sequence": 6})
+
+    def lazy():
+        return sum(m == "lazy outputs evaluated" for _, _, m in instance.messages)
+
+    inputs = dict(zip(INPUTS, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
+    for k in range(3):
+        instance.set({**inputs, "theta[1]": 0.1 * k})
+        instance.get(OUTPUTS[:12])
+        instance.fmu.doStep(0.1 * k, 0.1)
+    assert lazy() == 0
+    instance.get(["q[1]"])
+    instance.get(["R[2,3]", "W_body_dot[3,3]"])
+    assert lazy() == 1
+    instance.set({"theta_dot[2]": 9.0})
+    instance.get(OUTPUTS[:12])
+    assert lazy() == 1
+    assert instance.get(["W_fixed_dot[1,1]"]) is not None and lazy() == 2
