@@ -17,6 +17,7 @@ void ak_instance_reset(ak_instance *instance) {
         instance->values[vr] = vr < AK_MODEL.n_variables ? AK_MODEL.variables[vr].start : 0.0;
     }
     ak_instance_inputs_changed(instance);
+    instance->lazy_stale = true;
     instance->evaluation_status = AK_EVAL_OK;
     ak_instance_clear_input_derivatives(instance);
     instance->evaluations = 0;
@@ -37,6 +38,7 @@ ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
     }
     instance->evaluation_status = AK_MODEL.evaluate(instance);
     instance->outputs_stale = false;
+    instance->lazy_stale = true;
     instance->evaluations++;
     if (ak_log_on(instance, AK_LOG_CALLS)) {
         ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu)",

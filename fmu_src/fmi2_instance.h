@@ -52,8 +52,8 @@ typedef struct ak_instance_s {
     /* All variable values, indexed by value reference (fmi2_model.h). */
     double values[AK_MAX_VARIABLES];
     /* True when an input or parameter changed since the main output group was last computed;
-     * lazy_stale the same for the lazy group, which is computed only when one of its values
-     * is read. */
+     * lazy_stale: when the main group was computed since the lazy group was, which is computed
+     * only when one of its values is read. */
     bool outputs_stale;
     bool lazy_stale;
     /* Status of the last evaluation of the main group: on AK_EVAL_FAILED the outputs hold the
@@ -87,10 +87,11 @@ ak_eval_status ak_instance_update_all_outputs(ak_instance *instance);
  * fmi2Warning, or fmi2Discard when it failed (both interfaces; see fmi2_instance.c). */
 fmi2Status ak_instance_read_status(const ak_instance *instance, ak_eval_status status);
 
-/* Marks every output stale (an input or parameter changed). */
+/* Marks every output stale (an input or parameter changed): the main group directly, the lazy
+ * group through it (every evaluation of the main group makes the lazy group stale), so that a
+ * setter pays one store. */
 static inline void ak_instance_inputs_changed(ak_instance *instance) {
     instance->outputs_stale = true;
-    instance->lazy_stale = true;
 }
 
 #endif

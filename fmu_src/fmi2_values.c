@@ -29,6 +29,9 @@ static const char *type_name(ak_type type) {
 /* A value reference of this model whose variable has the function's type. */
 static bool known_value_reference(const ak_instance *instance, ak_function function,
                                   fmi2ValueReference vr, size_t index, ak_type type) {
+    if (type == AK_TYPE_REAL && vr < (fmi2ValueReference)AK_MODEL.first_parameter) {
+        return true; /* inputs and outputs, all Real (fmi2_model.h): no table lookup */
+    }
     if (vr >= (fmi2ValueReference)AK_MODEL.n_variables) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: vr[%zu] = %u is not a value reference of this FMU (0 to %d)",
@@ -125,16 +128,25 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         }
         return status;
     }
-    bool main = false, lazy = false;
+    /* Which output groups are read: past the inputs, and past the main group (lazy outputs or,
+     * rarely, Real parameters: then sorted out below). No branch per value reference. */
+    bool past_inputs = false, past_main = false;
     for (size_t i = 0; i < nvr; i++) {
         if (!known_value_reference(instance, AK_FMI2_GET_REAL, vr[i], i, AK_TYPE_REAL)) {
             return fmi2Error;
         }
-        /* Real variables: inputs, outputs, and Real parameters past first_parameter. */
-        if (vr[i] >= (fmi2ValueReference)AK_MODEL.n_inputs &&
-            vr[i] < (fmi2ValueReference)AK_MODEL.first_parameter) {
-            main = true;
-            lazy = lazy || vr[i] >= (fmi2ValueReference)AK_MODEL.first_lazy_output;
+        past_inputs |= vr[i] >= (fmi2ValueReference)AK_MODEL.n_inputs;
+        past_main |= vr[i] >= (fmi2ValueReference)AK_MODEL.first_lazy_output;
+    }
+    bool main = past_inputs, lazy = false;
+    if (past_main) {
+        main = false;
+        for (size_t i = 0; i < nvr; i++) {
+            if (vr[i] >= (fmi2ValueReference)AK_MODEL.n_inputs &&
+                vr[i] < (fmi2ValueReference)AK_MODEL.first_parameter) {
+                main = true;
+                lazy = lazy || vr[i] >= (fmi2ValueReference)AK_MODEL.first_lazy_output;
+            }
         }
     }
     const fmi2Status status = update_for_read(instance, main, lazy);

@@ -85,3 +85,32 @@ def test_copy_without_binaries_compiles_with_fmpy_and_simulates_identically(
         assert np.array_equal(ours[name], rebuilt[name]), name
     report(f"binary rebuilt by fmpy from sources/: {len(times)} rows x {len(names)} variables "
            "bit-identical to the packaged binary's")
+
+
+def test_euler_rates_source_fmu_compiles_with_fmpy_and_simulates_identically(
+        euler_unzipdir, euler_fmu_path, root, tmp_path):
+    """The second model's source FMU: its own source list (model_euler_rates*.c, not the other
+    model's), listed alike everywhere, rebuilt by fmpy into a binary that computes the same bits."""
+    listed = (root / "build" / "fmu_sources_EulerRates.txt").read_text().split()
+    assert "model_euler_rates.c" in listed and "model_angular_kinematics.c" not in listed
+    description = read_model_description(euler_fmu_path)
+    assert description.buildConfigurations[0].sourceFileSets[0].sourceFiles == listed
+    assert sorted(p.name for p in (pathlib.Path(euler_unzipdir) / "sources").glob("*.c")) == sorted(listed)
+    copy = tmp_path / "fmu"
+    shutil.copytree(euler_unzipdir, copy)
+    shutil.rmtree(copy / "binaries")
+    build_platform_binary(copy, build_dir=tmp_path, all_warnings=True,
+                          cmake_options={"CMAKE_COMPILE_WARNING_AS_ERROR:BOOL": "ON"})
+    names = ["theta_dot[1]", "theta_dot[2]", "theta_dot[3]", "theta_ddot[1]", "alpha_body[3]",
+             "singularity_distance"]
+    start = {"sequence": 11, "frame": 2, "theta[1]": 0.2, "theta[2]": 0.9, "omega[1]": 1.5,
+             "omega[3]": -0.5, "omega_dot[2]": 2.0}
+
+    def simulate(fmu):
+        return simulate_fmu(fmu, stop_time=0.1, output_interval=0.01, output=names,
+                            start_values=start)
+
+    ours, rebuilt = simulate(euler_fmu_path), simulate(str(copy))
+    for name in ["time"] + names:
+        assert np.array_equal(ours[name], rebuilt[name]), name
+    assert ours["singularity_distance"][-1] == pytest.approx(np.sin(0.9), rel=1e-15)

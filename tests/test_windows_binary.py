@@ -25,10 +25,17 @@ def wine():
     pytest.fail("wine is missing: bash scripts/setup.sh --with-wine installs Debian's wine64")
 
 
+@pytest.fixture(scope="module", params=["AngularKinematics", "EulerRates"])
+def model(request, unzipdir, euler_unzipdir):
+    """(model identifier, folder of its unzipped FMU)."""
+    return request.param, pathlib.Path(unzipdir if request.param == "AngularKinematics" else euler_unzipdir)
+
+
 @pytest.fixture(scope="module")
-def dll(unzipdir):
-    path = pathlib.Path(unzipdir) / "binaries" / "win64" / "AngularKinematics.dll"
-    assert path.is_file(), "the FMU holds no binaries/win64/AngularKinematics.dll"
+def dll(model):
+    name, folder = model
+    path = folder / "binaries" / "win64" / f"{name}.dll"
+    assert path.is_file(), f"the FMU holds no binaries/win64/{name}.dll"
     return path
 
 
@@ -59,10 +66,10 @@ def test_core_unit_tests_pass_on_windows():
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
 
 
-def test_dll_exports_what_the_linux_binary_exports(dll, unzipdir):
+def test_dll_exports_what_the_linux_binary_exports(dll, model):
     table = objdump(dll).split("[Ordinal/Name Pointer] Table", 1)[1].strip().split("\n\n", 1)[0]
     exported = set(re.findall(r"\]\s+(\w+)", table))
-    so = pathlib.Path(unzipdir) / "binaries" / "linux64" / "AngularKinematics.so"
+    so = model[1] / "binaries" / "linux64" / f"{model[0]}.so"
     dynamic = subprocess.run(["nm", "-D", "--defined-only", str(so)], check=True,
                              capture_output=True, text=True).stdout
     linux = {line.split()[-1] for line in dynamic.splitlines() if line.split()[-1].startswith("fmi2")}
@@ -79,20 +86,21 @@ def driver_rows(output):
     return rows[:, 1:]
 
 
-def test_dll_under_wine_computes_what_the_linux_binary_computes(dll, unzipdir, report):
-    so = pathlib.Path(unzipdir) / "binaries" / "linux64" / "AngularKinematics.so"
-    linux = subprocess.run([str(ROOT / "build" / "fmu_driver"), str(so), str(STEPS)], check=True,
-                           capture_output=True, text=True, timeout=60)
+def test_dll_under_wine_computes_what_the_linux_binary_computes(dll, model, report):
+    so = model[1] / "binaries" / "linux64" / f"{model[0]}.so"
+    linux = subprocess.run([str(ROOT / "build" / "fmu_driver"), str(so), str(STEPS), model[0]],
+                           check=True, capture_output=True, text=True, timeout=60)
     windows_path = "Z:" + str(dll).replace("/", "\\")
-    windows = subprocess.run([wine(), str(WIN64_BUILD / "fmu_driver.exe"), windows_path, str(STEPS)],
+    windows = subprocess.run([wine(), str(WIN64_BUILD / "fmu_driver.exe"), windows_path, str(STEPS),
+                              model[0]],
                              env=wine_environment(), capture_output=True, text=True, timeout=300)
     assert windows.returncode == 0, windows.stderr[-2000:]
     a, b = driver_rows(linux.stdout), driver_rows(windows.stdout)
     identical = np.count_nonzero(a == b)
     # Differences can only come from the two C libraries' sin and cos (last bit): measure them
-    # against the largest component of the same vector (omega or alpha, fixed or body) in the row.
+    # against the largest component of the same vector (of three outputs) in the row.
     scale = np.repeat(np.abs(a).reshape(STEPS, 4, 3).max(axis=2), 3, axis=1)
     worst = (np.abs(a - b) / np.maximum(scale, 1e-300)).max()
-    report(f"{STEPS} steps x 12 outputs: {identical} of {a.size} bit-identical, "
+    report(f"{model[0]}: {STEPS} steps x 12 outputs: {identical} of {a.size} bit-identical, "
            f"worst difference {worst:.1e} of the vector's largest component (tolerance 1e-15)")
     assert worst <= 1e-15

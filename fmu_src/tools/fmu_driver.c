@@ -1,12 +1,15 @@
 /* A minimal FMI 2.0 co-simulation master of our own, used to prove the Windows binary: built
  * natively and with mingw-w64, it loads an AngularKinematics binary (dlopen or LoadLibrary), drives
  * it through a fixed sequence of inputs, and prints every output with 17 significant digits. The
- * Linux build's printout and the Windows build's printout under wine are then compared.
+ * Linux build's printout and the Windows build's printout under wine are then compared. It drives
+ * either model: both have 9 Real inputs at value references 0..8 and 12 Real outputs at 9..20
+ * (AngularKinematics' omega and alpha; EulerRates' theta_dot, theta_ddot, alpha).
  *
  * The inputs are exact binary fractions computed without libm, so that both runs feed the FMU
  * bit-identical values and any difference comes from the two binaries alone.
  *
- * Usage: fmu_driver LIBRARY [STEPS]   exit status 0 when every call returned fmi2OK. */
+ * Usage: fmu_driver LIBRARY [STEPS [MODEL]]   MODEL: AngularKinematics (default) or EulerRates;
+ * exit status 0 when every call returned fmi2OK. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +17,7 @@
 
 #include "fmi2FunctionTypes.h"
 #include "model_angular_kinematics.h"
+#include "model_euler_rates.h"
 
 #ifdef _WIN32
 #include <windows.h>
@@ -98,20 +102,23 @@ static void logger(fmi2ComponentEnvironment environment, fmi2String instance, fm
 static void *allocate(size_t count, size_t size) { return calloc(count, size); }
 
 /* Input j at step k: an exact multiple of 1/64 between -2.5 and +2.5 (rad, rad/s, rad/s2); every
- * 17th step puts theta[2] at gimbal lock (+-pi/2 rounded to a double, the same on both sides). */
-static double input_value(int k, int j) {
+ * 17th step puts theta[2] at gimbal lock (+-pi/2 rounded to a double, the same on both sides), or
+ * for EulerRates, whose inverse map is undefined there, at +-1.5 (near it). */
+static double input_value(int k, int j, int inverse) {
     if (j == 1 && k % 17 == 0) {
-        return (k % 34 == 0 ? 1.0 : -1.0) * 1.5707963267948966;
+        return (k % 34 == 0 ? 1.0 : -1.0) * (inverse ? 1.5 : 1.5707963267948966);
     }
     return (double)((k * 37 + j * 101 + (k * j) % 23) % 321 - 160) / 64.0;
 }
 
 int main(int argc, char **argv) {
     if (argc < 2) {
-        fprintf(stderr, "usage: %s LIBRARY [STEPS]\n", argv[0]);
+        fprintf(stderr, "usage: %s LIBRARY [STEPS [AngularKinematics|EulerRates]]\n", argv[0]);
         return 2;
     }
     const int steps = argc > 2 ? atoi(argv[2]) : 200;
+    const int inverse = argc > 3 && strcmp(argv[3], "EulerRates") == 0;
+    const char *guid = inverse ? AK_EULER_RATES_GUID : AK_ANGULAR_KINEMATICS_GUID;
     void *library = open_library(argv[1]);
     if (library == NULL) {
         fprintf(stderr, "fmu_driver: cannot load %s\n", argv[1]);
@@ -124,7 +131,7 @@ int main(int argc, char **argv) {
     printf("fmi2GetVersion %s\n", api.get_version());
 
     const fmi2CallbackFunctions callbacks = {logger, allocate, free, NULL, NULL};
-    fmi2Component instance = api.instantiate("driver", fmi2CoSimulation, AK_ANGULAR_KINEMATICS_GUID, "", &callbacks,
+    fmi2Component instance = api.instantiate("driver", fmi2CoSimulation, guid, "", &callbacks,
                                              fmi2False, fmi2False);
     if (instance == NULL) {
         fprintf(stderr, "fmu_driver: fmi2Instantiate failed\n");
@@ -146,7 +153,7 @@ int main(int argc, char **argv) {
     for (int k = 0; k < steps && !failed; k++) {
         double u[AK_AK_N_INPUTS], y[AK_VR_R - AK_AK_N_INPUTS];
         for (int j = 0; j < AK_AK_N_INPUTS; j++) {
-            u[j] = input_value(k, j);
+            u[j] = input_value(k, j, inverse);
         }
         failed = api.set_real(instance, inputs, AK_AK_N_INPUTS, u) != fmi2OK ||
                  api.get_real(instance, outputs, AK_VR_R - AK_AK_N_INPUTS, y) != fmi2OK;
