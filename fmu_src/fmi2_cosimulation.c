@@ -39,6 +39,9 @@ static fmi2Status step_evaluating(ak_instance *instance, double t, double h) {
         memcpy(instance->values, saved_values, sizeof saved_values);
         memcpy(instance->input_derivatives, saved_derivatives, sizeof saved_derivatives);
         instance->any_input_derivative = saved_any;
+        /* The outputs are those of the last successful evaluation; a read evaluates again at the
+         * restored inputs (and fails again if they are the singular ones). */
+        ak_instance_inputs_changed(instance);
         instance->state = AK_STATE_STEP_FAILED;
         ak_log(instance, AK_LOG_WARNING, fmi2Discard,
                "fmi2DoStep: the step from %.17g to %.17g is discarded: the outputs cannot be "

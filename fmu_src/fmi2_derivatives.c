@@ -94,9 +94,11 @@ static bool value_reference_is(const ak_instance *instance, ak_function function
         return false;
     }
     if (AK_MODEL.variables[vr].causality != causality) {
-        ak_log(instance, AK_LOG_ERROR, fmi2Error, "%s: %s[%zu] = %u is %s, an %s; expected an %s",
+        const ak_causality found = AK_MODEL.variables[vr].causality;
+        ak_log(instance, AK_LOG_ERROR, fmi2Error, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
                ak_function_name(function), array_name, index, vr, AK_MODEL.variables[vr].name,
-               ak_causality_name(AK_MODEL.variables[vr].causality), ak_causality_name(causality));
+               found == AK_CAUSALITY_PARAMETER ? "a" : "an", ak_causality_name(found),
+               ak_causality_name(causality));
         return false;
     }
     return true;

@@ -104,6 +104,8 @@ def test_follows_the_current_inputs(make_instance):
                          "expected an output"),
     ([9], [0, 12], [1.0, 1.0], "fmi2GetDirectionalDerivative: vKnown_ref[1] = 12 is omega_body[1], an "
                                "output; expected an input"),
+    ([9], [70], [1.0], "fmi2GetDirectionalDerivative: vKnown_ref[0] = 70 is sequence, a parameter; "
+                       "expected an input"),
     ([71], [0], [1.0], "fmi2GetDirectionalDerivative: vUnknown_ref[0] = 71 is not a value reference of "
                        "this FMU (0 to 70)"),
     ([9], [0], [float("nan")], "fmi2GetDirectionalDerivative: dvKnown[0] = nan (seed of theta[1]) is "

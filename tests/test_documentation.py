@@ -101,3 +101,14 @@ def test_icon_and_figure_are_png_images(root):
         data = path.read_bytes()
         assert data.startswith(b"\x89PNG\r\n\x1a\n"), path
         assert (int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")) == size
+
+
+def test_generated_model_files_are_up_to_date(root):
+    """The variable tables and both modelDescription.xml are what scripts/generate_models.py writes."""
+    sys.path.insert(0, str(root / "scripts"))
+    try:
+        import generate_models
+    finally:
+        sys.path.pop(0)
+    for path, text in generate_models.outputs().items():
+        assert path.read_text() == text, f"{path} is out of date: run .venv/bin/python scripts/generate_models.py"
