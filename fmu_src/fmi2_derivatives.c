@@ -178,11 +178,13 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
                    "fmi2GetRealOutputDerivatives: order[%zu] = %d for %s: this FMU gives order "
                    "%d only (maxOutputDerivativeOrder)",
-                   i, (int)order[i], AK_MODEL.variables[vr[i]].name, AK_MAX_OUTPUT_DERIVATIVE_ORDER);
+                   i, (int)order[i], AK_MODEL.variables[vr[i]].name,
+                   AK_MAX_OUTPUT_DERIVATIVE_ORDER);
             return fmi2Error;
         }
     }
-    const fmi2Status status = ak_instance_read_status(instance, ak_instance_update_outputs(instance));
+    const fmi2Status status =
+        ak_instance_read_status(instance, ak_instance_update_outputs(instance));
     if (status == fmi2Error || status == fmi2Discard) {
         return status;
     }

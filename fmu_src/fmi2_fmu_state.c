@@ -56,10 +56,18 @@ enum {
 };
 
 /* The model's offsets (the layout above). */
-#define OFFSET_INPUT_DERIVATIVES ((size_t)OFFSET_VALUES + 8u * (size_t)AK_MODEL.n_variables)
-#define OFFSET_CHECKSUM                                                                          \
-    (OFFSET_INPUT_DERIVATIVES + 8u * (size_t)AK_MODEL.n_inputs * AK_MAX_INPUT_DERIVATIVE_ORDER)
-#define AK_STATE_SIZE (OFFSET_CHECKSUM + 4u)
+static size_t offset_input_derivatives(void) {
+    return (size_t)OFFSET_VALUES + 8u * (size_t)AK_MODEL.n_variables;
+}
+
+static size_t offset_checksum(void) {
+    return offset_input_derivatives() +
+           8u * (size_t)AK_MODEL.n_inputs * AK_MAX_INPUT_DERIVATIVE_ORDER;
+}
+
+static size_t state_size(void) {
+    return offset_checksum() + 4u;
+}
 
 _Static_assert(sizeof(double) == 8, "the layout stores IEEE 754 binary64 doubles");
 
@@ -125,10 +133,10 @@ static double get_f64(const unsigned char *p) {
 }
 
 static void encode(const ak_instance *instance, unsigned char bytes[AK_STATE_MAX_SIZE]) {
-    memset(bytes, 0, AK_STATE_SIZE);
+    memset(bytes, 0, state_size());
     memcpy(bytes + OFFSET_MAGIC, AK_STATE_MAGIC, 8);
     put_u32(bytes + OFFSET_VERSION, AK_STATE_FORMAT_VERSION);
-    put_u32(bytes + OFFSET_SIZE, (uint32_t)AK_STATE_SIZE);
+    put_u32(bytes + OFFSET_SIZE, (uint32_t)state_size());
     memcpy(bytes + OFFSET_GUID, AK_MODEL.guid, strlen(AK_MODEL.guid));
     put_u32(bytes + OFFSET_FMU_TYPE, (uint32_t)instance->fmu_type);
     put_u32(bytes + OFFSET_STATE, (uint32_t)instance->state);
@@ -140,11 +148,12 @@ static void encode(const ak_instance *instance, unsigned char bytes[AK_STATE_MAX
     }
     for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-            put_f64(bytes + OFFSET_INPUT_DERIVATIVES + 8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n),
+            put_f64(bytes + offset_input_derivatives() +
+                        8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n),
                     instance->input_derivatives[k][n]);
         }
     }
-    put_u32(bytes + OFFSET_CHECKSUM, crc32(bytes, OFFSET_CHECKSUM));
+    put_u32(bytes + offset_checksum(), crc32(bytes, offset_checksum()));
 }
 
 static const char *interface_name(uint32_t fmu_type) {
@@ -189,16 +198,16 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
         return false;
     }
     const uint32_t declared = get_u32(bytes + OFFSET_SIZE);
-    if (size != AK_STATE_SIZE || declared != AK_STATE_SIZE) {
+    if (size != state_size() || declared != state_size()) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: the FMU state is %zu bytes long and declares %u bytes; format version %u "
                "of %s has %zu bytes (truncated or extended)",
                name, size, declared, AK_STATE_FORMAT_VERSION, AK_MODEL.model_identifier,
-               (size_t)AK_STATE_SIZE);
+               state_size());
         return false;
     }
-    const uint32_t stored = get_u32(bytes + OFFSET_CHECKSUM);
-    const uint32_t computed = crc32(bytes, OFFSET_CHECKSUM);
+    const uint32_t stored = get_u32(bytes + offset_checksum());
+    const uint32_t computed = crc32(bytes, offset_checksum());
     if (stored != computed) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: the FMU state is corrupt: its CRC-32 is 0x%08x, the bytes give 0x%08x", name,
@@ -256,7 +265,7 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
     }
     for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-            const double d = get_f64(bytes + OFFSET_INPUT_DERIVATIVES +
+            const double d = get_f64(bytes + offset_input_derivatives() +
                                      8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n));
             if (!isfinite(d)) {
                 ak_log(instance, AK_LOG_ERROR, fmi2Error,
@@ -335,7 +344,7 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
     }
     const ak_fmu_state *s = known_state(instance, AK_FMI2_SET_FMU_STATE, FMUstate);
     ak_state_content content;
-    if (s == NULL || !decode(instance, AK_FMI2_SET_FMU_STATE, s->bytes, AK_STATE_SIZE, &content)) {
+    if (s == NULL || !decode(instance, AK_FMI2_SET_FMU_STATE, s->bytes, state_size(), &content)) {
         return fmi2Error;
     }
     instance->state = content.state;
@@ -386,7 +395,7 @@ fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, si
         known_state(instance, AK_FMI2_SERIALIZED_FMU_STATE_SIZE, FMUstate) == NULL) {
         return fmi2Error;
     }
-    *size = AK_STATE_SIZE;
+    *size = state_size();
     return fmi2OK;
 }
 
@@ -402,14 +411,14 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
                        "serializedState")) {
         return fmi2Error;
     }
-    if (size < AK_STATE_SIZE) {
+    if (size < state_size()) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "fmi2SerializeFMUstate: size = %zu is too small; the state needs %zu bytes "
                "(fmi2SerializedFMUstateSize)",
-               size, (size_t)AK_STATE_SIZE);
+               size, state_size());
         return fmi2Error;
     }
-    memcpy(serializedState, s->bytes, AK_STATE_SIZE);
+    memcpy(serializedState, s->bytes, state_size());
     return fmi2OK;
 }
 
@@ -429,7 +438,7 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
         return fmi2Error;
     }
     s->tag = AK_STATE_TAG;
-    memcpy(s->bytes, serializedState, AK_STATE_SIZE);
+    memcpy(s->bytes, serializedState, state_size());
     *FMUstate = s;
     return fmi2OK;
 }

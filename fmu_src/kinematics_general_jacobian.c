@@ -75,7 +75,8 @@ static void d_body_pair(const chain_terms *t, int j, int m, int l, double out[3]
     }
 }
 
-static void angle_columns(const chain_terms *t, double J[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS]) {
+static void angle_columns(const chain_terms *t,
+                          double J[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS]) {
     for (int j = 0; j < 3; j++) {
         const int col = t->column[j];
         double dof[3] = {0, 0, 0}, dob[3] = {0, 0, 0}, daf[3] = {0, 0, 0}, dab[3] = {0, 0, 0};
