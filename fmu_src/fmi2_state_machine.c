@@ -31,14 +31,9 @@ enum {
     ME_READABLE = INITIALIZATION_MODE | EVENT_MODE | CONTINUOUS_TIME_MODE | TERMINATED
 };
 
-/* The interfaces a function belongs to. */
-enum { CS = 1 << 0, ME = 1 << 1, BOTH = CS | ME };
+enum { CS = AK_INTERFACE_CS, ME = AK_INTERFACE_ME, BOTH = CS | ME };
 
-static const struct {
-    const char *name;
-    unsigned int allowed_states;
-    unsigned int interfaces;
-} FUNCTIONS[AK_N_FMI2_FUNCTIONS] = {
+const ak_function_rule AK_FUNCTION_RULES[AK_N_FMI2_FUNCTIONS] = {
     [AK_FMI2_SET_DEBUG_LOGGING] = {"fmi2SetDebugLogging", ANY_STATE, BOTH},
     [AK_FMI2_FREE_INSTANCE] = {"fmi2FreeInstance", ANY_STATE & ~STEP_IN_PROGRESS, BOTH},
     [AK_FMI2_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", INSTANTIATED, BOTH},
@@ -97,7 +92,7 @@ static const struct {
 };
 
 const char *ak_function_name(ak_function function) {
-    return FUNCTIONS[function].name;
+    return AK_FUNCTION_RULES[function].name;
 }
 
 const char *ak_state_name(ak_state state) {
@@ -115,26 +110,26 @@ const char *ak_state_name(ak_state state) {
     return "unknown";
 }
 
-bool ak_call_allowed(const ak_instance *instance, ak_function function) {
+bool ak_call_checked(const ak_instance *instance, ak_function function) {
     if (instance == NULL) {
         return false;
     }
     const unsigned int interface = instance->fmu_type == fmi2ModelExchange ? ME : CS;
-    if ((FUNCTIONS[function].interfaces & interface) == 0) {
+    if ((AK_FUNCTION_RULES[function].interfaces & interface) == 0) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: a %s function, but this instance was created for %s",
-               FUNCTIONS[function].name, interface == ME ? "co-simulation" : "model-exchange",
+               AK_FUNCTION_RULES[function].name, interface == ME ? "co-simulation" : "model-exchange",
                interface == ME ? "model exchange (fmi2ModelExchange)"
                                : "co-simulation (fmi2CoSimulation)");
         return false;
     }
-    if ((FUNCTIONS[function].allowed_states & (unsigned int)instance->state) == 0) {
+    if ((AK_FUNCTION_RULES[function].allowed_states & (unsigned int)instance->state) == 0) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error, "%s: illegal call in state %s",
-               FUNCTIONS[function].name, ak_state_name(instance->state));
+               AK_FUNCTION_RULES[function].name, ak_state_name(instance->state));
         return false;
     }
     if (ak_log_on(instance, AK_LOG_CALLS)) {
-        ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s", FUNCTIONS[function].name);
+        ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s", AK_FUNCTION_RULES[function].name);
     }
     return true;
 }

@@ -6,6 +6,7 @@
 #include <stdbool.h>
 
 #include "fmi2_instance.h"
+#include "fmi2_logging.h"
 
 typedef enum {
     AK_FMI2_SET_DEBUG_LOGGING,
@@ -54,12 +55,41 @@ typedef enum {
 
 const char *ak_function_name(ak_function function);
 
+/* The interfaces a function belongs to (a mask). */
+enum { AK_INTERFACE_CS = 1 << 0, AK_INTERFACE_ME = 1 << 1 };
+
+/* For each FMI function: its name, the mask of the states it may be called in, and the
+ * interfaces it belongs to (fmi2_state_machine.c). */
+typedef struct {
+    const char *name;
+    unsigned int allowed_states;
+    unsigned int interfaces;
+} ak_function_rule;
+
+extern const ak_function_rule AK_FUNCTION_RULES[AK_N_FMI2_FUNCTIONS];
+
+/* The full check of ak_call_allowed, out of line: it diagnoses and logs a refused call and
+ * traces a legal one in logCalls. */
+bool ak_call_checked(const ak_instance *instance, ak_function function);
+
 /* The check at the top of every entry point taking an instance: false for a NULL instance
  * (nothing can be logged then), a function of the other interface (a co-simulation function
  * called on a model-exchange instance or the reverse), or a state the function is not allowed
  * in; the last two are logged as errors naming the function and the interface or state. A legal
- * call is traced in logCalls. */
-bool ak_call_allowed(const ak_instance *instance, ak_function function);
+ * call is traced in logCalls. Inline, so that a legal call with the trace off costs two mask
+ * tests in the caller and no call (bench/run.sh); everything else goes to ak_call_checked. */
+static inline bool ak_call_allowed(const ak_instance *instance, ak_function function) {
+    if (instance != NULL) {
+        const ak_function_rule *rule = &AK_FUNCTION_RULES[function];
+        const unsigned int interface =
+            instance->fmu_type == fmi2ModelExchange ? AK_INTERFACE_ME : AK_INTERFACE_CS;
+        if ((rule->allowed_states & (unsigned int)instance->state) != 0 &&
+            (rule->interfaces & interface) != 0 && !ak_log_on(instance, AK_LOG_CALLS)) {
+            return true;
+        }
+    }
+    return ak_call_checked(instance, function);
+}
 
 const char *ak_state_name(ak_state state);
 
