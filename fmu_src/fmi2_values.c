@@ -4,6 +4,7 @@
  * set only in Instantiated and InitializationMode. */
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "fmi2Functions.h"
 #include "fmi2_derivatives.h"
@@ -67,12 +68,19 @@ static bool run_below(const fmi2ValueReference vr[], size_t nvr, size_t end) {
 /* The usual fmi2SetReal: every value reference is an input and every value finite. One pass
  * with no branch per value; any failure is diagnosed by the detailed loop of fmi2SetReal. */
 static bool all_inputs_finite(const fmi2ValueReference vr[], size_t nvr, const double value[]) {
-    const fmi2ValueReference n_inputs = (fmi2ValueReference)AK_MODEL.n_inputs;
-    bool ok = true;
+    /* In 64-bit integers, so that the compiler vectorizes the pass: bit 63 of `bad` ends up set
+     * when some vr is not below n_inputs (n_inputs - 1 - vr is then negative), or when some
+     * value is not finite (its exponent field is all ones, and adding one to the field carries
+     * into bit 63). */
+    const uint64_t exponent = 0x7ff0000000000000u, exponent_one = 0x0010000000000000u;
+    const uint64_t last_input = (uint64_t)AK_MODEL.n_inputs - 1;
+    uint64_t bad = 0;
     for (size_t i = 0; i < nvr; i++) {
-        ok &= (vr[i] < n_inputs) & isfinite(value[i]);
+        uint64_t bits;
+        memcpy(&bits, &value[i], sizeof bits);
+        bad |= ((bits & exponent) + exponent_one) | (last_input - (uint64_t)vr[i]);
     }
-    return ok;
+    return (bad >> 63) == 0;
 }
 
 /* A parameter may be set only before fmi2ExitInitializationMode (variability fixed); the value
