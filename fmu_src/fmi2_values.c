@@ -147,6 +147,20 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         }
         return status;
     }
+    /* Inputs and outputs of the main group in another order: one pass finds the highest value
+     * reference (no branch, vectorized), which tells whether outputs are read. */
+    fmi2ValueReference highest = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        highest = vr[i] > highest ? vr[i] : highest;
+    }
+    if (highest < (fmi2ValueReference)AK_MODEL.first_lazy_output) {
+        const fmi2Status status = update_for_read(
+            instance, highest >= (fmi2ValueReference)AK_MODEL.n_inputs, false);
+        for (size_t i = 0; i < nvr; i++) {
+            value[i] = instance->values[vr[i]];
+        }
+        return status;
+    }
     /* Which output groups are read: past the inputs, and past the main group (lazy outputs or,
      * rarely, Real parameters: then sorted out below). No branch per value reference. */
     bool past_inputs = false, past_main = false;
