@@ -1,0 +1,45 @@
+/* The bad-input table: every kind of bad input and illegal call, the status it gets and the
+ * message it logs. docs/bad_input.md shows this table; test_fmi2_calls proves each row and prints
+ * the table as it observed it, and tests/test_bad_input_table.py compares that with the document. */
+#ifndef ANGULAR_KINEMATICS_FMI2_BAD_INPUT_TABLE_H
+#define ANGULAR_KINEMATICS_FMI2_BAD_INPUT_TABLE_H
+
+#include <stddef.h>
+
+#include "fmi2Functions.h"
+#include "fmi2_test_ops.h"
+
+/* A bad call on an instance brought to state `in` (one of the AK_IN_ states). */
+typedef struct {
+    unsigned int in;
+    const char *call; /* the call as the document shows it; c is the instance */
+    ak_op_id op;
+    ak_args args;
+    fmi2Status status;
+    const char *message; /* exactly what the master's logger receives */
+} ak_bad_call;
+
+/* What a master can hand fmi2Instantiate. */
+typedef enum {
+    AK_GOOD_CALLBACKS,
+    AK_NULL_CALLBACKS,           /* functions == NULL */
+    AK_CALLBACKS_WITHOUT_MEMORY, /* allocateMemory and freeMemory NULL */
+} ak_callbacks_choice;
+
+/* A bad fmi2Instantiate call: it returns NULL. */
+typedef struct {
+    const char *call;
+    fmi2String instance_name;
+    int fmu_type;
+    fmi2String guid;
+    ak_callbacks_choice callbacks;
+    long allocations_before_failure; /* negative: memory never runs out */
+    const char *message;             /* NULL: nothing can be logged */
+} ak_bad_instantiate;
+
+extern const ak_bad_call AK_BAD_CALLS[];
+extern const size_t AK_N_BAD_CALLS;
+extern const ak_bad_instantiate AK_BAD_INSTANTIATES[];
+extern const size_t AK_N_BAD_INSTANTIATES;
+
+#endif

@@ -1,0 +1,345 @@
+/* Drives every exported FMI 2.0 function through legal and illegal sequences and every row of the
+ * bad-input table, with a logger that keeps the messages and an allocator that counts. Checked
+ * after every call: the status, the exact messages, that a rejected call left the instance bit for
+ * bit unchanged and usable, and that nothing leaked. Built normally (ctest), with ASan+UBSan, and
+ * run under valgrind (scripts/check_sanitizers.sh).
+ *
+ *   test_fmi2_calls           run everything, print a summary
+ *   test_fmi2_calls --table   the same, then print the bad-input table as observed (markdown) */
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+#include "fmi2_bad_input_table.h"
+#include "fmi2_test_callbacks.h"
+#include "fmi2_test_instance.h"
+#include "fmi2_test_ops.h"
+
+static int failures = 0;
+static int checks = 0;
+
+static bool check(bool ok, const char *context, const char *what) {
+    checks++;
+    if (!ok) {
+        failures++;
+        printf("FAIL %s: %s\n", context, what);
+    }
+    return ok;
+}
+
+static const unsigned int REACHABLE_STATES[] = {AK_IN_INSTANTIATED, AK_IN_INITIALIZATION_MODE,
+                                                AK_IN_STEP_COMPLETE, AK_IN_TERMINATED};
+enum { N_REACHABLE_STATES = sizeof REACHABLE_STATES / sizeof REACHABLE_STATES[0] };
+
+static const char *category_for(fmi2Status status) {
+    return status == fmi2Error ? "logStatusError" : "logStatusWarning";
+}
+
+/* Exactly one message, with this status, text and instance name; or none when text is NULL. */
+static void check_logged(const ak_recorder *recorder, const char *context, fmi2Status status,
+                         const char *text, const char *instance_name) {
+    check(recorder->contract_violations == 0, context, "the logger got a malformed message");
+    if (text == NULL) {
+        check(recorder->count == 0, context, "a message was logged where none should be");
+        return;
+    }
+    if (!check(recorder->count == 1, context, "not exactly one message logged")) {
+        for (size_t i = 0; i < recorder->count && i < AK_RECORDED_MESSAGES; i++) {
+            printf("     logged: %s\n", recorder->messages[i].text);
+        }
+        return;
+    }
+    const ak_recorded_message *m = &recorder->messages[0];
+    if (!check(strcmp(m->text, text) == 0, context, "wrong message")) {
+        printf("     logged:   %s\n     expected: %s\n", m->text, text);
+    }
+    check(m->status == status, context, "message logged with another status than returned");
+    check(strcmp(m->category, category_for(status)) == 0, context, "message in wrong category");
+    check(strcmp(m->instance_name, instance_name) == 0, context, "message names another instance");
+}
+
+/* After a rejected call the instance must go on as if the call never happened. */
+static void check_still_usable(fmi2Component c, unsigned int state, const char *context) {
+    if (state & (AK_IN_INITIALIZATION_MODE | AK_IN_STEP_COMPLETE | AK_IN_TERMINATED)) {
+        check(ak_test_outputs_consistent(c), context, "outputs unreadable or inconsistent after");
+    }
+    if (state == AK_IN_STEP_COMPLETE) {
+        check(fmi2DoStep(c, AK_TEST_STEP_COMPLETE_TIME, 0.5, fmi2True) == fmi2OK, context,
+              "cannot step after");
+    }
+}
+
+static void print_row(const char *state, const char *call, const char *status,
+                      const char *message) {
+    printf("| %s | `%s` | %s | %s%s%s |\n", state, call, status, message ? "`" : "",
+           message ? message : "(nothing logged)", message ? "`" : "");
+}
+
+static void run_bad_calls(bool print_table) {
+    for (size_t row = 0; row < AK_N_BAD_CALLS; row++) {
+        const ak_bad_call *bad = &AK_BAD_CALLS[row];
+        char context[256];
+        snprintf(context, sizeof context, "bad call %zu: %s", row + 1, bad->call);
+        ak_recorder recorder;
+        ak_recorder_clear(&recorder);
+        const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+        fmi2Component c = ak_test_instantiate("bad-input", &functions, false);
+        if (!check(c != NULL && ak_test_bring_to(c, bad->in), context, "setup failed")) {
+            continue;
+        }
+        ak_recorder_clear(&recorder);
+        ak_snapshot before;
+        ak_snapshot_take(&before, c);
+        const fmi2Status status = AK_OPS[bad->op].call(c, &bad->args);
+        const bool status_ok = check(status == bad->status, context, "wrong status");
+        if (!status_ok) {
+            printf("     returned %s, expected %s\n", ak_status_name(status),
+                   ak_status_name(bad->status));
+        }
+        check_logged(&recorder, context, status, bad->message, "bad-input");
+        check(ak_snapshot_unchanged(&before, c), context, "the rejected call changed the instance");
+        check_still_usable(c, bad->in, context);
+        fmi2FreeInstance(c);
+        check(ak_test_live_allocations() == 0, context, "memory left allocated after freeing");
+        if (print_table && status_ok) {
+            print_row(ak_test_state_name(bad->in), bad->call, ak_status_name(status),
+                      recorder.count == 1 ? recorder.messages[0].text : NULL);
+        }
+    }
+}
+
+static void run_bad_instantiates(bool print_table) {
+    for (size_t row = 0; row < AK_N_BAD_INSTANTIATES; row++) {
+        const ak_bad_instantiate *bad = &AK_BAD_INSTANTIATES[row];
+        char context[256];
+        snprintf(context, sizeof context, "bad instantiate %zu: %s", row + 1, bad->call);
+        ak_recorder recorder;
+        ak_recorder_clear(&recorder);
+        fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+        if (bad->callbacks == AK_CALLBACKS_WITHOUT_MEMORY) {
+            functions.allocateMemory = NULL;
+            functions.freeMemory = NULL;
+        }
+        ak_test_fail_allocations_after(bad->allocations_before_failure);
+        fmi2Component c = fmi2Instantiate(
+            bad->instance_name, (fmi2Type)bad->fmu_type, bad->guid, "file:///unused",
+            bad->callbacks == AK_NULL_CALLBACKS ? NULL : &functions, fmi2False, fmi2False);
+        ak_test_fail_allocations_after(-1);
+        check(c == NULL, context, "an instance was created");
+        check_logged(&recorder, context, fmi2Error, bad->message,
+                     bad->instance_name ? bad->instance_name : "");
+        check(ak_test_live_allocations() == 0, context, "memory left allocated");
+        if (print_table && c == NULL) {
+            print_row("(none)", bad->call, "NULL",
+                      recorder.count == 1 ? recorder.messages[0].text : NULL);
+        }
+    }
+}
+
+/* Arguments harmless to every op, with room for any single result. */
+static ak_args benign_args(double time, ak_result *result) {
+    ak_args args = {0};
+    args.real[0] = time;
+    args.real[1] = 0.1;
+    args.real[2] = AK_TEST_STOP_TIME;
+    args.flag[0] = fmi2True;
+    args.kind = fmi2LastSuccessfulTime;
+    args.out = result;
+    return args;
+}
+
+/* Every op with c = NULL: fmi2Error (fmi2FreeInstance: nothing), no crash, nothing allocated. */
+static bool run_null_instance(void) {
+    const int failures_before = failures;
+    for (int op = 0; op < AK_N_OPS; op++) {
+        ak_result result = {0};
+        const ak_args args = benign_args(0.0, &result);
+        const fmi2Status status = AK_OPS[op].call(NULL, &args);
+        check(status == (op == AK_OP_FREE_INSTANCE ? fmi2OK : fmi2Error), AK_OPS[op].name,
+              "wrong status for c = NULL");
+    }
+    check(ak_test_live_allocations() == 0, "c = NULL", "memory allocated");
+    return failures == failures_before;
+}
+
+/* Every op in every reachable state: where the standard forbids it, fmi2Error, one message
+ * "<function>: illegal call in state <state>" and nothing changed; where it allows it, no such
+ * message. */
+static bool run_state_matrix(void) {
+    const int failures_before = failures;
+    for (int op = 0; op < AK_N_OPS; op++) {
+        for (int s = 0; s < N_REACHABLE_STATES; s++) {
+            const unsigned int state = REACHABLE_STATES[s];
+            char context[160];
+            snprintf(context, sizeof context, "%s in state %s", AK_OPS[op].name,
+                     ak_test_state_name(state));
+            ak_recorder recorder;
+            ak_recorder_clear(&recorder);
+            const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+            fmi2Component c = ak_test_instantiate("matrix", &functions, false);
+            if (!check(c != NULL && ak_test_bring_to(c, state), context, "setup failed")) {
+                continue;
+            }
+            ak_recorder_clear(&recorder);
+            const double time = state == AK_IN_INSTANTIATED || state == AK_IN_INITIALIZATION_MODE
+                                    ? 0.0
+                                    : AK_TEST_STEP_COMPLETE_TIME;
+            ak_result result = {0};
+            const ak_args args = benign_args(time, &result);
+            ak_snapshot before;
+            ak_snapshot_take(&before, c);
+            const fmi2Status status = AK_OPS[op].call(c, &args);
+            char illegal[160];
+            snprintf(illegal, sizeof illegal, "%s: illegal call in state %s", AK_OPS[op].name,
+                     ak_test_state_name(state));
+            const bool allowed = (AK_OPS[op].allowed_in & state) != 0;
+            if (!allowed) {
+                check(status == fmi2Error, context, "forbidden call not refused");
+                check_logged(&recorder, context, fmi2Error, illegal, "matrix");
+                check(ak_snapshot_unchanged(&before, c), context, "forbidden call changed it");
+            } else {
+                check(recorder.count == 0 || strcmp(recorder.messages[0].text, illegal) != 0,
+                      context, "allowed call refused as illegal");
+            }
+            if (op != AK_OP_FREE_INSTANCE) {
+                fmi2FreeInstance(c);
+            }
+            check(ak_test_live_allocations() == 0, context, "memory left allocated");
+        }
+    }
+    return failures == failures_before;
+}
+
+static const fmi2ValueReference INPUT_VRS[AK_N_INPUTS] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+
+/* A whole simulation, a reset from every state and a second simulation: all fmi2OK, outputs
+ * always the core's, and not one message at the default logging level. */
+static void run_legal_sequences(void) {
+    const char *context = "legal sequence";
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    fmi2Component c = ak_test_instantiate("legal", &functions, false);
+    if (!check(c != NULL, context, "instantiation failed")) {
+        return;
+    }
+    for (int s = 0; s < N_REACHABLE_STATES; s++) {
+        check(ak_test_bring_to(c, REACHABLE_STATES[s]), context, "cannot reach state");
+        check(fmi2Reset(c) == fmi2OK, context, "reset failed");
+        const ak_instance *instance = c;
+        check(instance->state == AK_STATE_INSTANTIATED && instance->time == 0.0, context,
+              "reset did not bring back the initial condition");
+        for (int vr = 0; vr < AK_N_INPUTS; vr++) {
+            check(instance->values[vr] == AK_VARIABLES[vr].start, context,
+                  "reset did not restore the start values");
+        }
+    }
+    check(ak_test_bring_to(c, AK_IN_STEP_COMPLETE), context, "cannot initialize after reset");
+    double time = AK_TEST_STEP_COMPLETE_TIME;
+    for (int step = 0; step < 1000; step++) {
+        fmi2Real inputs[AK_N_INPUTS];
+        for (int i = 0; i < AK_N_INPUTS; i++) {
+            inputs[i] = sin(0.01 * step * (i + 1)) * (i + 1);
+        }
+        if (step % 3 != 0) { /* sometimes the master does not set the inputs at all */
+            check(fmi2SetReal(c, INPUT_VRS, AK_N_INPUTS, inputs) == fmi2OK, context, "set");
+        }
+        check(ak_test_outputs_consistent(c), context, "outputs are not the core's");
+        check(fmi2DoStep(c, time, 0.005, fmi2False) == fmi2OK, context, "step");
+        time += 0.005;
+    }
+    fmi2Real last_time = 0.0;
+    fmi2Boolean terminated = fmi2True;
+    check(fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &last_time) == fmi2OK &&
+              last_time == time,
+          context, "fmi2LastSuccessfulTime is not the end of the last step");
+    check(fmi2GetBooleanStatus(c, fmi2Terminated, &terminated) == fmi2OK &&
+              terminated == fmi2False,
+          context, "fmi2Terminated status");
+    check(fmi2Terminate(c) == fmi2OK, context, "terminate");
+    check(ak_test_outputs_consistent(c), context, "outputs after terminate");
+    /* Huge but finite inputs are legal; the outputs may overflow, but stay the core's. */
+    check(fmi2Reset(c) == fmi2OK && fmi2SetReal(c, INPUT_VRS, AK_N_INPUTS,
+                                                (const fmi2Real[]){1e300, -1e300, 1e300, 1e200,
+                                                                   1e200, -1e200, 1e308, 5e-324,
+                                                                   -1e-310}) == fmi2OK,
+          context, "huge finite inputs refused");
+    check(fmi2EnterInitializationMode(c) == fmi2OK && ak_test_outputs_consistent(c), context,
+          "outputs for huge inputs are not the core's");
+    check(recorder.count == 0, context, "messages logged at the default logging level");
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
+/* fmi2SetDebugLogging switches categories; '%' in what the FMU logs reaches the master intact. */
+static void run_logging(void) {
+    const char *context = "logging";
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    const char *name = "100% sure: %s%n%d";
+    fmi2Component c = ak_test_instantiate(name, &functions, true);
+    if (!check(c != NULL, context, "instantiation failed")) {
+        return;
+    }
+    check(recorder.count == 1 &&
+              strcmp(recorder.messages[0].text,
+                     "fmi2Instantiate: instance \"100% sure: %s%n%d\" created") == 0 &&
+              strcmp(recorder.messages[0].instance_name, name) == 0,
+          context, "'%' not escaped for the master's printf");
+    ak_recorder_clear(&recorder);
+    check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){0.1}) == fmi2OK && recorder.count == 2 &&
+              strcmp(recorder.messages[1].text, "fmi2SetReal: theta[1] = 0.10000000000000001") == 0 &&
+              strcmp(recorder.messages[1].category, "logCalls") == 0,
+          context, "logCalls trace of fmi2SetReal");
+    ak_recorder_clear(&recorder);
+    check(fmi2SetDebugLogging(c, fmi2False, 0, NULL) == fmi2OK, context, "all off");
+    ak_recorder_clear(&recorder); /* the trace of the switch itself */
+    check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){NAN}) == fmi2Error &&
+              recorder.count == 0,
+          context, "a category switched off still logs");
+    check(fmi2SetDebugLogging(c, fmi2True, 1, (const fmi2String[]){"logStatusError"}) == fmi2OK,
+          context, "errors on");
+    ak_recorder_clear(&recorder);
+    check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){NAN}) == fmi2Error &&
+              recorder.count == 1 && strcmp(recorder.messages[0].category, "logStatusError") == 0,
+          context, "logStatusError switched on does not log");
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
+/* Version and platform strings, needing no instance. */
+static void run_instance_free_functions(void) {
+    check(strcmp(fmi2GetVersion(), "2.0") == 0, "fmi2GetVersion", "not 2.0");
+    check(strcmp(fmi2GetTypesPlatform(), "default") == 0, "fmi2GetTypesPlatform", "not default");
+}
+
+int main(int argc, char **argv) {
+    const bool print_table = argc > 1 && strcmp(argv[1], "--table") == 0;
+    if (print_table) {
+        printf("| State | Call | Status | Message logged |\n|---|---|---|---|\n");
+    }
+    run_bad_instantiates(print_table);
+    run_bad_calls(print_table);
+    const bool null_ok = run_null_instance();
+    const bool matrix_ok = run_state_matrix();
+    if (print_table && null_ok) {
+        print_row("(none)", "any function but fmi2Instantiate with c = NULL", "fmi2Error",
+                  NULL);
+    }
+    if (print_table && matrix_ok) {
+        print_row("any", "any function in a state where FMI 2.0 forbids it", "fmi2Error",
+                  "<function>: illegal call in state <state>");
+    }
+    run_legal_sequences();
+    run_logging();
+    run_instance_free_functions();
+    fprintf(print_table ? stderr : stdout,
+            "test_fmi2_calls: %d checks, %d failures (%zu bad calls, %zu bad instantiations, "
+            "%d functions x %d states)\n",
+            checks, failures, AK_N_BAD_CALLS, AK_N_BAD_INSTANTIATES, (int)AK_N_OPS,
+            N_REACHABLE_STATES);
+    return failures == 0 ? 0 : 1;
+}
