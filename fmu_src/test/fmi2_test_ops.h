@@ -6,6 +6,7 @@
 #ifndef ANGULAR_KINEMATICS_FMI2_TEST_OPS_H
 #define ANGULAR_KINEMATICS_FMI2_TEST_OPS_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "fmi2Functions.h"
@@ -104,6 +105,9 @@ typedef struct {
     ak_value_type values_type;
     ak_value_type values2_type;
     fmi2Status (*call)(fmi2Component c, const ak_args *a);
+    /* ak_args.out is an fmi2FMUstate* the master keeps (get, free, deserialize an FMU state);
+     * otherwise it is an ak_result*. */
+    bool out_is_fmu_state;
 } ak_op;
 
 extern const ak_op AK_OPS[AK_N_OPS];

@@ -258,6 +258,11 @@ static void run_legal_sequences(void) {
     check(fmi2GetBooleanStatus(c, fmi2Terminated, &terminated) == fmi2OK &&
               terminated == fmi2False,
           context, "fmi2Terminated status");
+    /* A step too small to move the time in double precision is still a step > 0. */
+    check(fmi2DoStep(c, time, 5e-324, fmi2True) == fmi2OK &&
+              fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &last_time) == fmi2OK &&
+              last_time == time,
+          context, "denormal step");
     check(fmi2Terminate(c) == fmi2OK, context, "terminate");
     check(ak_test_outputs_consistent(c), context, "outputs after terminate");
     /* Huge but finite inputs are legal; the outputs may overflow, but stay the core's. */
@@ -306,6 +311,12 @@ static void run_logging(void) {
     check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){NAN}) == fmi2Error &&
               recorder.count == 1 && strcmp(recorder.messages[0].category, "logStatusError") == 0,
           context, "logStatusError switched on does not log");
+    /* Any non-zero fmi2Boolean is true. */
+    check(fmi2SetDebugLogging(c, 7, 1, (const fmi2String[]){"logCalls"}) == fmi2OK, context,
+          "loggingOn = 7");
+    ak_recorder_clear(&recorder);
+    check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){0.2}) == fmi2OK && recorder.count == 2,
+          context, "loggingOn = 7 did not switch logCalls on");
     fmi2FreeInstance(c);
     check(ak_test_live_allocations() == 0, context, "memory left allocated");
 }

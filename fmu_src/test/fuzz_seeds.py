@@ -1,0 +1,111 @@
+"""Writes seed inputs for fuzz_fmi2 in its encoding (see fuzz_fmi2.c): whole simulations, several
+instances, logging on, bad arguments, every function in StepComplete. The fuzzer mutates these
+into its corpus; scripts/fuzz.sh runs this once when the corpus folder is empty.
+
+    python fuzz_seeds.py OUTPUT_FOLDER"""
+import pathlib
+import struct
+import sys
+
+# Op numbers of fmi2_test_ops.h (ak_op_id); AK_N_OPS is fmi2Instantiate.
+OPS = ["SET_DEBUG_LOGGING", "SETUP_EXPERIMENT", "ENTER_INITIALIZATION_MODE", "EXIT_INITIALIZATION_MODE",
+       "TERMINATE", "RESET", "GET_REAL", "GET_INTEGER", "GET_BOOLEAN", "GET_STRING", "SET_REAL",
+       "SET_INTEGER", "SET_BOOLEAN", "SET_STRING", "GET_FMU_STATE", "SET_FMU_STATE", "FREE_FMU_STATE",
+       "SERIALIZED_FMU_STATE_SIZE", "SERIALIZE_FMU_STATE", "DE_SERIALIZE_FMU_STATE",
+       "GET_DIRECTIONAL_DERIVATIVE", "SET_REAL_INPUT_DERIVATIVES", "GET_REAL_OUTPUT_DERIVATIVES",
+       "DO_STEP", "CANCEL_STEP", "GET_STATUS", "GET_REAL_STATUS", "GET_INTEGER_STATUS",
+       "GET_BOOLEAN_STATUS", "GET_STRING_STATUS", "FREE_INSTANCE"]
+OP = {name: number for number, name in enumerate(OPS)}
+INSTANTIATE = len(OPS)
+# Element types of the value arrays (values, values2), as in the op table.
+TYPES = {"GET_REAL": ("real", None), "SET_REAL": ("real", None), "GET_INTEGER": ("int", None),
+         "SET_INTEGER": ("int", None), "GET_BOOLEAN": ("byte", None), "SET_BOOLEAN": ("byte", None),
+         "GET_STRING": ("byte", None), "SET_STRING": ("byte", None),
+         "GET_DIRECTIONAL_DERIVATIVE": ("byte", "real"), "SET_REAL_INPUT_DERIVATIVES": ("real", "int"),
+         "GET_REAL_OUTPUT_DERIVATIVES": ("real", "int")}
+# Indices into SPECIAL_REALS; TIME is "the slot's time".
+ZERO, ONE, TENTH, HALF, MILLI, TEN, NAN, INF, TIME = 0, 2, 4, 5, 6, 7, 22, 24, 0x7F
+
+
+def raw_real(value):
+    return bytes([0x80]) + struct.pack("<d", value)
+
+
+def real(code_or_value):
+    if isinstance(code_or_value, float):
+        return raw_real(code_or_value)
+    return bytes([code_or_value])
+
+
+def call(op, slot=0, nulls=0, vr=(), values=(), values2=(), vr2=(), known=(), categories=(),
+         data=b"", reals=(ZERO, ZERO, ZERO), flags=(0, 0, 0), kind=0, state=0):
+    if op == "FREE_INSTANCE":  # takes no arguments
+        return bytes([OP[op], slot])
+    out = bytes([OP[op], slot, nulls, len(vr)])
+    first, second = TYPES.get(op, ("byte", None))
+    for v in vr:
+        out += bytes([v]) if v < 0xF0 else bytes([0xF0]) + struct.pack("<I", v)
+    for kind_of, given in ((first, values), (second or "byte", values2)):
+        for i in range(len(vr)):
+            value = given[i] if i < len(given) else 0
+            if kind_of == "real":
+                out += real(value)
+            elif kind_of == "int":
+                out += struct.pack("<i", value)
+            else:
+                out += bytes([value])
+    out += bytes([len(vr2)]) + b"".join(bytes([v]) for v in vr2)
+    out += b"".join(real(known[i] if i < len(known) else ZERO) for i in range(len(vr2)))
+    out += bytes([len(categories)]) + bytes(categories)
+    out += bytes([len(data)]) + data
+    out += b"".join(real(r) for r in reals) + bytes(flags) + bytes([kind, state])
+    return out
+
+
+def instantiate(slot=0, name=0, fmu_type=1, guid=0, callbacks=0, fail_after=0, logging=0):
+    return bytes([INSTANTIATE, slot, name, fmu_type, guid, callbacks, fail_after, logging])
+
+
+def simulation(slot=0, steps=10, logging=0):
+    seed = instantiate(slot, logging=logging)
+    seed += call("SETUP_EXPERIMENT", slot, reals=(ZERO, ZERO, TEN), flags=(0, 1, 0))
+    seed += call("ENTER_INITIALIZATION_MODE", slot)
+    seed += call("SET_REAL", slot, vr=range(9), values=[4, 5, 2, 3, 8, 9, 10, 11, 28])
+    seed += call("EXIT_INITIALIZATION_MODE", slot)
+    for k in range(steps):
+        seed += call("SET_REAL", slot, vr=[k % 9], values=[0.1 * k])
+        seed += call("DO_STEP", slot, reals=(TIME, TENTH, ZERO), flags=(1, 0, 0))
+        seed += call("GET_REAL", slot, vr=range(21))
+    return seed
+
+
+def main(folder):
+    folder = pathlib.Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    seeds = {"simulation": simulation() + call("TERMINATE") + call("RESET") + call("FREE_INSTANCE")}
+    seeds["logging_on"] = simulation(logging=1) + call("SET_DEBUG_LOGGING", categories=[2], flags=(0, 0, 0))
+    seeds["three_instances"] = simulation(0, 3) + simulation(1, 3) + simulation(2, 3) + call("FREE_INSTANCE", 1)
+    bad = simulation(steps=1)
+    bad += call("SET_REAL", vr=[0, 5], values=[ONE, NAN]) + call("SET_REAL", vr=[9], values=[ONE])
+    bad += call("SET_REAL", vr=[0xFFFFFFFF], values=[ONE]) + call("GET_REAL", nulls=1, vr=[9])
+    bad += call("DO_STEP", reals=(ZERO, TENTH, ZERO)) + call("DO_STEP", reals=(TIME, INF, ZERO))
+    bad += call("DO_STEP", reals=(TIME, TEN, ZERO)) + call("DO_STEP", reals=(TIME, 1e-300, ZERO))
+    bad += call("SETUP_EXPERIMENT") + call("CANCEL_STEP") + call("RESET") + call("DO_STEP")
+    seeds["bad_arguments"] = bad
+    every = simulation(steps=1)
+    for op in OPS:
+        every += call(op, vr=[9, 0], values=[ONE, ONE], values2=[ONE, ONE], vr2=[0], known=[ONE],
+                      categories=[0, 3], data=b"\x01\x02\x03\x04", reals=(TIME, TENTH, TEN), kind=2)
+    seeds["every_function"] = every
+    seeds["bad_instantiations"] = b"".join(
+        instantiate(name=n, fmu_type=t, guid=g, callbacks=c, fail_after=f)
+        for n, t, g, c, f in [(1, 1, 0, 0, 0), (2, 1, 0, 0, 0), (3, 1, 0, 0, 0), (4, 1, 0, 0, 0), (0, 0, 0, 0, 0),
+                              (0, 2, 0, 0, 0), (0, 1, 1, 0, 0), (0, 1, 2, 0, 0), (0, 1, 0, 1, 0), (0, 1, 0, 2, 0),
+                              (0, 1, 0, 3, 0), (0, 1, 0, 3, 1), (0, 1, 0, 3, 2)])
+    for name, data in seeds.items():
+        (folder / f"seed_{name}").write_bytes(data)
+    print(f"fuzz_seeds: {len(seeds)} seeds written to {folder}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Runs the C tests of the FMI layer (test_fmi2_calls, test_fmi2_instances, soak_fmi2, and the
+# core's test_kinematics) under AddressSanitizer + UndefinedBehaviorSanitizer, ThreadSanitizer and
+# valgrind memcheck. Any report fails the run. docs/abuse_testing.md explains what each proves.
+#
+#   bash scripts/check_sanitizers.sh            full sizes
+#   bash scripts/check_sanitizers.sh --quick    the bounded sizes CI runs
+set -euo pipefail
+cd "$(dirname "$0")/.."
+quick=${1:-}
+
+bash scripts/setup.sh
+bash scripts/setup_abuse_tools.sh
+
+if [ "$quick" = --quick ]; then
+  steps=50; soak=200000; valgrind_steps=3; valgrind_soak=20000
+else
+  steps=100; soak=1000000; valgrind_steps=20; valgrind_soak=200000
+fi
+
+configure_and_build() { # folder, sanitizers, targets...
+  local folder=$1 sanitize=$2
+  shift 2
+  mkdir -p "$folder"
+  if ! CC=gcc cmake -S . -B "$folder" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAK_SANITIZE="$sanitize" \
+      -DPython3_EXECUTABLE="$PWD/.venv/bin/python" -DAK_DIST_DIR="$PWD/$folder/dist" \
+      >"$folder/configure.log" 2>&1; then
+    cat "$folder/configure.log"
+    exit 1
+  fi
+  cmake --build "$folder" --parallel 2 --target "$@" >"$folder/build.log" 2>&1 || {
+    cat "$folder/build.log"
+    exit 1
+  }
+}
+
+run() { # label, command...
+  local label=$1
+  shift
+  echo "--- $label: $*"
+  "$@"
+}
+
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
+
+echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
+configure_and_build build-asan address,undefined test_fmi2_calls test_fmi2_instances soak_fmi2 test_kinematics
+run asan+ubsan build-asan/test_kinematics
+run asan+ubsan build-asan/test_fmi2_calls
+run asan+ubsan build-asan/test_fmi2_instances 1000 4 "$steps"
+run asan+ubsan build-asan/soak_fmi2 "$soak" --no-rss-check
+
+echo "=== ThreadSanitizer (gcc, build-tsan/)"
+configure_and_build build-tsan thread test_fmi2_instances
+run tsan build-tsan/test_fmi2_instances 1000 4 "$steps"
+run tsan build-tsan/test_fmi2_instances 64 8 "$steps"
+
+echo "=== valgrind memcheck (the normal build, build/)"
+bash scripts/build.sh >/dev/null
+memcheck=(valgrind --quiet --error-exitcode=99 --leak-check=full --show-leak-kinds=all
+          --errors-for-leak-kinds=all)
+run memcheck "${memcheck[@]}" build/test_kinematics
+run memcheck "${memcheck[@]}" build/test_fmi2_calls
+run memcheck "${memcheck[@]}" build/test_fmi2_instances 1000 4 "$valgrind_steps"
+run memcheck "${memcheck[@]}" build/soak_fmi2 "$valgrind_soak" --no-rss-check
+
+echo "check_sanitizers: ASan+UBSan, TSan and memcheck: 0 errors, 0 leaks"
