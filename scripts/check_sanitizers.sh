@@ -15,7 +15,7 @@ bash scripts/setup_abuse_tools.sh
 if [ "$quick" = --quick ]; then
   steps=50; soak=200000; valgrind_steps=3; valgrind_soak=20000
 else
-  steps=100; soak=1000000; valgrind_steps=20; valgrind_soak=200000
+  steps=1000; soak=10000000; valgrind_steps=50; valgrind_soak=1000000
 fi
 
 configure_and_build() { # folder, sanitizers, targets...
@@ -59,11 +59,17 @@ run tsan build-tsan/test_fmi2_instances 64 8 "$steps"
 
 echo "=== valgrind memcheck (the normal build, build/)"
 bash scripts/build.sh >/dev/null
-memcheck=(valgrind --quiet --error-exitcode=99 --leak-check=full --show-leak-kinds=all
-          --errors-for-leak-kinds=all)
-run memcheck "${memcheck[@]}" build/test_kinematics
-run memcheck "${memcheck[@]}" build/test_fmi2_calls
-run memcheck "${memcheck[@]}" build/test_fmi2_instances 1000 4 "$valgrind_steps"
-run memcheck "${memcheck[@]}" build/soak_fmi2 "$valgrind_soak" --no-rss-check
+memcheck() { # program, arguments...: valgrind's summary printed, any error or leak fails
+  local log
+  log="build/memcheck-$(basename "$1").log"
+  echo "--- memcheck: $*"
+  valgrind --error-exitcode=99 --leak-check=full --show-leak-kinds=all --errors-for-leak-kinds=all \
+    --log-file="$log" "$@"
+  grep -E "ERROR SUMMARY|in use at exit|total heap usage" "$log" | sed 's/^==[0-9]*== /    valgrind: /'
+}
+memcheck build/test_kinematics
+memcheck build/test_fmi2_calls
+memcheck build/test_fmi2_instances 1000 4 "$valgrind_steps"
+memcheck build/soak_fmi2 "$valgrind_soak" --no-rss-check
 
 echo "check_sanitizers: ASan+UBSan, TSan and memcheck: 0 errors, 0 leaks"

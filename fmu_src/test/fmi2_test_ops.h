@@ -86,6 +86,7 @@ typedef struct {
     int kind;            /* fmi2StatusKind */
     fmi2FMUstate state;  /* an FMU state handed to the FMU */
     void *out;           /* where a single result goes: status value, size, FMUstate */
+    void *out2;          /* a second result (fmi2CompletedIntegratorStep has two) */
 } ak_args;
 
 /* Room for any single result an op writes through ak_args.out. */
@@ -97,6 +98,7 @@ typedef union {
     fmi2String string;
     fmi2FMUstate state;
     size_t size;
+    fmi2EventInfo event_info; /* fmi2NewDiscreteStates */
 } ak_result;
 
 typedef struct {

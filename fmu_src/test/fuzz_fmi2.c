@@ -123,7 +123,7 @@ typedef struct {
     ak_args args;
     fmi2ValueReference *vr, *vr2;
     fmi2String *categories;
-    ak_result result;
+    ak_result result, result2;
 } ak_decoded;
 
 enum {
@@ -176,6 +176,7 @@ static void decode_args(ak_input *in, const ak_op *op, ak_slot *slot, ak_decoded
     a->state = *state;
     if (!(nulls & NULL_OUT)) {
         a->out = op->out_is_fmu_state ? (void *)state : (void *)&d->result;
+        a->out2 = &d->result2;
     }
     /* The pointers kept in d for freeing; the arguments may hide them behind NULL. */
     if (nulls & NULL_VALUES) {

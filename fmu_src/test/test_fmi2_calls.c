@@ -139,14 +139,15 @@ static void run_bad_instantiates(bool print_table) {
 }
 
 /* Arguments harmless to every op, with room for any single result. */
-static ak_args benign_args(double time, ak_result *result) {
+static ak_args benign_args(double time, ak_result result[2]) {
     ak_args args = {0};
     args.real[0] = time;
     args.real[1] = 0.1;
     args.real[2] = AK_TEST_STOP_TIME;
     args.flag[0] = fmi2True;
     args.kind = fmi2LastSuccessfulTime;
-    args.out = result;
+    args.out = &result[0];
+    args.out2 = &result[1];
     return args;
 }
 
@@ -154,8 +155,8 @@ static ak_args benign_args(double time, ak_result *result) {
 static bool run_null_instance(void) {
     const int failures_before = failures;
     for (int op = 0; op < AK_N_OPS; op++) {
-        ak_result result = {0};
-        const ak_args args = benign_args(0.0, &result);
+        ak_result result[2] = {{0}};
+        const ak_args args = benign_args(0.0, result);
         const fmi2Status status = AK_OPS[op].call(NULL, &args);
         check(status == (op == AK_OP_FREE_INSTANCE ? fmi2OK : fmi2Error), AK_OPS[op].name,
               "wrong status for c = NULL");
@@ -186,8 +187,8 @@ static bool run_state_matrix(void) {
             const double time = state == AK_IN_INSTANTIATED || state == AK_IN_INITIALIZATION_MODE
                                     ? 0.0
                                     : AK_TEST_STEP_COMPLETE_TIME;
-            ak_result result = {0};
-            const ak_args args = benign_args(time, &result);
+            ak_result result[2] = {{0}};
+            const ak_args args = benign_args(time, result);
             ak_snapshot before;
             ak_snapshot_take(&before, c);
             const fmi2Status status = AK_OPS[op].call(c, &args);
