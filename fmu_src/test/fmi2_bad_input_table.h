@@ -34,6 +34,7 @@ typedef struct {
     fmi2String guid;
     ak_callbacks_choice callbacks;
     long allocations_before_failure; /* negative: memory never runs out */
+    long failing_allocations;        /* then this many fail (negative: all the following) */
     const char *message;             /* NULL: nothing can be logged */
 } ak_bad_instantiate;
 

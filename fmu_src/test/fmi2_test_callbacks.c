@@ -12,9 +12,13 @@
 static atomic_long live_allocations;
 static atomic_long total_allocations;
 static _Thread_local long allocations_until_failure = -1;
+static _Thread_local long failures_left = 0;
 
 static void *allocate(size_t count, size_t size) {
-    if (allocations_until_failure == 0) {
+    if (allocations_until_failure == 0 && failures_left != 0) {
+        if (failures_left > 0) {
+            failures_left--;
+        }
         return NULL;
     }
     if (allocations_until_failure > 0) {
@@ -85,6 +89,7 @@ long ak_test_total_allocations(void) {
     return atomic_load(&total_allocations);
 }
 
-void ak_test_fail_allocations_after(long successes) {
+void ak_test_fail_allocations(long successes, long failures) {
     allocations_until_failure = successes;
+    failures_left = successes < 0 ? 0 : failures;
 }

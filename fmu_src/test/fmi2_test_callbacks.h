@@ -33,8 +33,9 @@ void ak_recorder_clear(ak_recorder *recorder);
 long ak_test_live_allocations(void);
 /* Allocations ever made through it, in all threads. */
 long ak_test_total_allocations(void);
-/* The calling thread's next `successes` allocations succeed, the following ones fail;
- * a negative count means never fail. */
-void ak_test_fail_allocations_after(long successes);
+/* The calling thread's next `successes` allocations succeed, then `failures` fail (a negative
+ * count: all the following ones), then they succeed again. ak_test_fail_allocations(-1, 0):
+ * never fail. */
+void ak_test_fail_allocations(long successes, long failures);
 
 #endif

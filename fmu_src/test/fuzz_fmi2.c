@@ -234,7 +234,9 @@ static void instantiate(ak_input *in, ak_slot *slot, ak_recorder *recorder) {
     const int type = take_byte(in) % 3;
     const char *guid = guids[take_byte(in) % 3];
     const uint8_t callbacks_choice = take_byte(in) % 4;
-    const long fail_after = take_byte(in) % 3;
+    const uint8_t failure = take_byte(in);
+    const long fail_after = failure % 3;                    /* allocations that succeed, */
+    const long failing = (failure >> 2) % 3 == 2 ? -1 : (failure >> 2) % 3 + 1; /* then fail */
     const fmi2Boolean logging_on = (fmi2Boolean)(take_byte(in) & 1);
     release_slot(slot);
     fmi2CallbackFunctions functions = ak_test_callbacks(recorder);
@@ -243,12 +245,12 @@ static void instantiate(ak_input *in, ak_slot *slot, ak_recorder *recorder) {
         functions.freeMemory = NULL;
     }
     if (callbacks_choice == 3) {
-        ak_test_fail_allocations_after(fail_after);
+        ak_test_fail_allocations(fail_after, failing);
     }
     slot->instance = fmi2Instantiate(name, (fmi2Type)type, guid, "file:///unused",
                                      callbacks_choice == 2 ? NULL : &functions, fmi2False,
                                      logging_on);
-    ak_test_fail_allocations_after(-1);
+    ak_test_fail_allocations(-1, 0);
 }
 
 enum {

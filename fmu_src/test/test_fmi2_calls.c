@@ -122,11 +122,11 @@ static void run_bad_instantiates(bool print_table) {
             functions.allocateMemory = NULL;
             functions.freeMemory = NULL;
         }
-        ak_test_fail_allocations_after(bad->allocations_before_failure);
+        ak_test_fail_allocations(bad->allocations_before_failure, bad->failing_allocations);
         fmi2Component c = fmi2Instantiate(
             bad->instance_name, (fmi2Type)bad->fmu_type, bad->guid, "file:///unused",
             bad->callbacks == AK_NULL_CALLBACKS ? NULL : &functions, fmi2False, fmi2False);
-        ak_test_fail_allocations_after(-1);
+        ak_test_fail_allocations(-1, 0);
         check(c == NULL, context, "an instance was created");
         check_logged(&recorder, context, fmi2Error, bad->message,
                      bad->instance_name ? bad->instance_name : "");

@@ -141,8 +141,25 @@ static double seconds_since(const struct timespec *start_time) {
            1e-9 * (double)(now.tv_nsec - start_time->tv_nsec);
 }
 
+/* How many allocations one live instance holds, measured rather than assumed. */
+static long allocations_per_instance(void) {
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    const long before = ak_test_live_allocations();
+    fmi2Component c = ak_test_instantiate("probe", &functions, false);
+    const long held = ak_test_live_allocations() - before;
+    fmi2FreeInstance(c);
+    return c != NULL ? held : -1;
+}
+
 static bool run(const char *label, int instances, int threads, int steps, bool one_at_a_time,
                 uint64_t *hashes) {
+    const long per_instance = allocations_per_instance();
+    if (per_instance < 1) {
+        printf("FAIL %s: cannot instantiate a probe instance\n", label);
+        return false;
+    }
     ak_worker *workers = calloc((size_t)threads, sizeof *workers);
     pthread_t *ids = calloc((size_t)threads, sizeof *ids);
     if (workers == NULL || ids == NULL) {
@@ -157,9 +174,9 @@ static bool run(const char *label, int instances, int threads, int steps, bool o
         workers[t] = (ak_worker){.first = t, .stride = threads, .steps = steps,
                                  .count = (instances - t + threads - 1) / threads,
                                  .one_at_a_time = one_at_a_time, .hashes = hashes,
-                                 /* an instance is two allocations: itself and its name */
-                                 .expect_live = threads == 1 && !one_at_a_time ? 2L * instances
-                                                                               : 0};
+                                 .expect_live = threads == 1 && !one_at_a_time
+                                                    ? per_instance * instances
+                                                    : 0};
         if (threads == 1) {
             work(&workers[t]);
         } else if (pthread_create(&ids[t], NULL, work, &workers[t]) != 0) {
