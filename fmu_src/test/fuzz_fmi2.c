@@ -225,10 +225,12 @@ static void release_slot(ak_slot *slot) {
     slot->instance = NULL;
 }
 
-static char long_name[1500];
-
 static void instantiate(ak_input *in, ak_slot *slot, ak_recorder *recorder) {
-    static const char *const names[] = {"fuzz", "", NULL, "100% %s%n", long_name};
+    char long_name[1500]; /* longer than any message buffer of the FMU, with a '%' */
+    memset(long_name, 'n', sizeof long_name - 1);
+    long_name[10] = '%';
+    long_name[sizeof long_name - 1] = '\0';
+    const char *const names[] = {"fuzz", "", NULL, "100% %s%n", long_name};
     static const char *const guids[] = {AK_GUID, "{00000000-0000-0000-0000-000000000000}", NULL};
     const char *name = names[take_byte(in) % 5];
     const int type = take_byte(in) % 3;
@@ -273,8 +275,6 @@ static void check_instance(fmi2Component c) {
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
-    memset(long_name, 'n', sizeof long_name - 1);
-    long_name[10] = '%';
     ak_input in = {data, size};
     ak_recorder recorder;
     ak_recorder_clear(&recorder);
