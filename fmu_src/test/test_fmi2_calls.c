@@ -338,8 +338,10 @@ int main(int argc, char **argv) {
     const bool null_ok = run_null_instance();
     const bool matrix_ok = run_state_matrix();
     if (print_table && null_ok) {
-        print_row("(none)", "any function but fmi2Instantiate with c = NULL", "fmi2Error",
-                  NULL);
+        print_row("(none)",
+                  "any function but fmi2Instantiate with c = NULL (fmi2FreeInstance returns "
+                  "nothing)",
+                  "fmi2Error", NULL);
     }
     if (print_table && matrix_ok) {
         print_row("any", "any function in a state where FMI 2.0 forbids it", "fmi2Error",
