@@ -52,6 +52,16 @@ run asan+ubsan build-asan/test_fmi2_calls
 run asan+ubsan build-asan/test_fmi2_instances 1000 4 "$steps"
 run asan+ubsan build-asan/soak_fmi2 "$soak" --no-rss-check
 
+# The instrumented AngularKinematics.so inside a real master: the whole pytest suite through fmpy.
+# Leak detection is off here only because the Python interpreter itself does not free everything
+# at exit; the FMU's leaks are checked by the C programs above and by valgrind below.
+configure_and_build build-asan address,undefined fmu
+echo "--- asan+ubsan: pytest through fmpy with build-asan/dist/AngularKinematics.fmu"
+AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" \
+  LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)" \
+  ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest tests -q -p no:cacheprovider \
+  | tail -1
+
 echo "=== ThreadSanitizer (gcc, build-tsan/)"
 configure_and_build build-tsan thread test_fmi2_instances
 run tsan build-tsan/test_fmi2_instances 1000 4 "$steps"

@@ -2,6 +2,7 @@
 their log messages captured."""
 import ctypes
 import json
+import os
 import pathlib
 import subprocess
 import sys
@@ -14,7 +15,8 @@ from fmpy.fmi2 import (FMU2Slave, calloc, fmi2CallbackAllocateMemoryTYPE, fmi2Ca
 from fmpy.logging import addLoggerProxy
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-FMU_PATH = ROOT / "dist" / "AngularKinematics.fmu"
+# AK_FMU: another build of the FMU to test (scripts/check_sanitizers.sh passes its ASan build).
+FMU_PATH = pathlib.Path(os.environ.get("AK_FMU", ROOT / "dist" / "AngularKinematics.fmu"))
 BUILD_DIR = ROOT / "build"
 sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
 
