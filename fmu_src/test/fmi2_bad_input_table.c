@@ -252,6 +252,8 @@ const ak_bad_instantiate AK_BAD_INSTANTIATES[] = {
      GUID_MISMATCH("{00000000-0000-0000-0000-000000000000}")},
     {"fmi2Instantiate(\"i\", fmi2CoSimulation, NULL, ...)", "i", fmi2CoSimulation, NULL,
      AK_GOOD_CALLBACKS, -1, 0, GUID_MISMATCH("(null)")},
+    {"fmi2Instantiate(\"i\", fmi2CoSimulation, NULL, ..., functions without logger, ...)", "i",
+     fmi2CoSimulation, NULL, AK_CALLBACKS_WITHOUT_LOGGER, -1, 0, NULL},
     {"fmi2Instantiate(...) when every allocateMemory returns NULL", "i", fmi2CoSimulation,
      AK_GUID, AK_GOOD_CALLBACKS, 0, -1, "fmi2Instantiate: out of memory allocating the instance"},
     {"fmi2Instantiate(...) when only the first allocateMemory returns NULL", "i",

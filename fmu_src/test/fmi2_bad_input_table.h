@@ -24,6 +24,7 @@ typedef enum {
     AK_GOOD_CALLBACKS,
     AK_NULL_CALLBACKS,           /* functions == NULL */
     AK_CALLBACKS_WITHOUT_MEMORY, /* allocateMemory and freeMemory NULL */
+    AK_CALLBACKS_WITHOUT_LOGGER, /* logger NULL: nothing can be said */
 } ak_callbacks_choice;
 
 /* A bad fmi2Instantiate call: it returns NULL. */

@@ -235,7 +235,7 @@ static void instantiate(ak_input *in, ak_slot *slot, ak_recorder *recorder) {
     const char *name = names[take_byte(in) % 5];
     const int type = take_byte(in) % 3;
     const char *guid = guids[take_byte(in) % 3];
-    const uint8_t callbacks_choice = take_byte(in) % 4;
+    const uint8_t callbacks_choice = take_byte(in) % 5;
     const uint8_t failure = take_byte(in);
     const long fail_after = failure % 3;                    /* allocations that succeed, */
     const long failing = (failure >> 2) % 3 == 2 ? -1 : (failure >> 2) % 3 + 1; /* then fail */
@@ -245,6 +245,9 @@ static void instantiate(ak_input *in, ak_slot *slot, ak_recorder *recorder) {
     if (callbacks_choice == 1) {
         functions.allocateMemory = NULL;
         functions.freeMemory = NULL;
+    }
+    if (callbacks_choice == 4) {
+        functions.logger = NULL;
     }
     if (callbacks_choice == 3) {
         ak_test_fail_allocations(fail_after, failing);

@@ -63,7 +63,8 @@ def call(op, slot=0, nulls=0, vr=(), values=(), values2=(), vr2=(), known=(), ca
 
 
 def instantiate(slot=0, name=0, fmu_type=1, guid=0, callbacks=0, fail_after=0, logging=0):
-    """fail_after: with callbacks=3, bits 0-1 successes (0-2) then bits 2-3: fail once, twice, for good."""
+    """callbacks: 0 good, 1 without memory functions, 2 NULL, 3 failing allocator, 4 without logger.
+    fail_after: with callbacks=3, bits 0-1 successes (0-2) then bits 2-3: fail once, twice, for good."""
     return bytes([INSTANTIATE, slot, name, fmu_type, guid, callbacks, fail_after, logging])
 
 
@@ -103,7 +104,7 @@ def main(folder):
         for n, t, g, c, f in [(1, 1, 0, 0, 0), (2, 1, 0, 0, 0), (3, 1, 0, 0, 0), (4, 1, 0, 0, 0), (0, 0, 0, 0, 0),
                               (0, 2, 0, 0, 0), (0, 1, 1, 0, 0), (0, 1, 2, 0, 0), (0, 1, 0, 1, 0), (0, 1, 0, 2, 0),
                               (0, 1, 0, 3, 0), (0, 1, 0, 3, 1), (0, 1, 0, 3, 2), (0, 1, 0, 3, 4),
-                              (0, 1, 0, 3, 8), (0, 1, 0, 3, 9)])
+                              (0, 1, 0, 3, 8), (0, 1, 0, 3, 9), (0, 1, 1, 4, 0), (0, 1, 0, 4, 0)])
     for name, data in seeds.items():
         (folder / f"seed_{name}").write_bytes(data)
     print(f"fuzz_seeds: {len(seeds)} seeds written to {folder}")

@@ -122,6 +122,9 @@ static void run_bad_instantiates(bool print_table) {
             functions.allocateMemory = NULL;
             functions.freeMemory = NULL;
         }
+        if (bad->callbacks == AK_CALLBACKS_WITHOUT_LOGGER) {
+            functions.logger = NULL;
+        }
         ak_test_fail_allocations(bad->allocations_before_failure, bad->failing_allocations);
         fmi2Component c = fmi2Instantiate(
             bad->instance_name, (fmi2Type)bad->fmu_type, bad->guid, "file:///unused",
@@ -322,6 +325,28 @@ static void run_logging(void) {
     check(ak_test_live_allocations() == 0, context, "memory left allocated");
 }
 
+/* A master may give no logger: bad calls are still refused, silently, and nothing breaks. */
+static void run_without_logger(void) {
+    const char *context = "no logger";
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    functions.logger = NULL;
+    fmi2Component c = ak_test_instantiate("silent", &functions, true);
+    if (!check(c != NULL && ak_test_bring_to(c, AK_IN_STEP_COMPLETE), context, "setup failed")) {
+        return;
+    }
+    for (size_t row = 0; row < AK_N_BAD_CALLS; row++) {
+        const ak_bad_call *bad = &AK_BAD_CALLS[row];
+        if (bad->in == AK_IN_STEP_COMPLETE) {
+            check(AK_OPS[bad->op].call(c, &bad->args) == bad->status, context, bad->call);
+        }
+    }
+    check(ak_test_outputs_consistent(c) && recorder.count == 0, context, "after the bad calls");
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
 /* Version and platform strings, needing no instance. */
 static void run_instance_free_functions(void) {
     check(strcmp(fmi2GetVersion(), "2.0") == 0, "fmi2GetVersion", "not 2.0");
@@ -349,6 +374,7 @@ int main(int argc, char **argv) {
     }
     run_legal_sequences();
     run_logging();
+    run_without_logger();
     run_instance_free_functions();
     fprintf(print_table ? stderr : stdout,
             "test_fmi2_calls: %d checks, %d failures (%zu bad calls, %zu bad instantiations, "
