@@ -2,6 +2,7 @@
 their log messages captured."""
 import ctypes
 import json
+import os
 import pathlib
 import subprocess
 import sys
@@ -14,8 +15,10 @@ from fmpy.fmi2 import (FMU2Model, FMU2Slave, calloc, fmi2CallbackAllocateMemoryT
 from fmpy.logging import addLoggerProxy
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-FMU_PATH = ROOT / "dist" / "AngularKinematics.fmu"
-EULER_FMU_PATH = ROOT / "dist" / "EulerRates.fmu"
+# AK_FMU, AK_EULER_FMU: other builds of the FMUs to test (scripts/check_sanitizers.sh passes its
+# ASan builds).
+FMU_PATH = pathlib.Path(os.environ.get("AK_FMU", ROOT / "dist" / "AngularKinematics.fmu"))
+EULER_FMU_PATH = pathlib.Path(os.environ.get("AK_EULER_FMU", ROOT / "dist" / "EulerRates.fmu"))
 BUILD_DIR = ROOT / "build"
 sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
 

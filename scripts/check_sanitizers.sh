@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# Runs the C tests of the FMI layer (test_fmi2_calls, test_fmi2_instances, soak_fmi2, each built
+# for both models: AngularKinematics, and EulerRates with the suffix _EulerRates; and the core's
+# test_kinematics) under AddressSanitizer + UndefinedBehaviorSanitizer, ThreadSanitizer and
+# valgrind memcheck, and the pytest suite through fmpy with both FMUs built with ASan+UBSan. Any
+# report fails the run. docs/abuse_testing.md explains what each proves.
+#
+#   bash scripts/check_sanitizers.sh            full sizes
+#   bash scripts/check_sanitizers.sh --quick    the bounded sizes CI runs
+set -euo pipefail
+cd "$(dirname "$0")/.."
+quick=${1:-}
+
+bash scripts/setup.sh
+bash scripts/setup_abuse_tools.sh
+
+if [ "$quick" = --quick ]; then
+  steps=50; soak=200000; valgrind_steps=3; valgrind_soak=20000
+else
+  steps=1000; soak=10000000; valgrind_steps=50; valgrind_soak=1000000
+fi
+
+configure_and_build() { # folder, sanitizers, targets...
+  local folder=$1 sanitize=$2
+  shift 2
+  mkdir -p "$folder"
+  if ! CC=gcc cmake -S . -B "$folder" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAK_SANITIZE="$sanitize" \
+      -DPython3_EXECUTABLE="$PWD/.venv/bin/python" -DAK_DIST_DIR="$PWD/$folder/dist" \
+      >"$folder/configure.log" 2>&1; then
+    cat "$folder/configure.log"
+    exit 1
+  fi
+  cmake --build "$folder" --parallel 2 --target "$@" >"$folder/build.log" 2>&1 || {
+    cat "$folder/build.log"
+    exit 1
+  }
+}
+
+run() { # label, command...
+  local label=$1
+  shift
+  echo "--- $label: $*"
+  "$@"
+}
+
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
+
+programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRates
+  test_fmi2_instances_EulerRates soak_fmi2_EulerRates"
+echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
+# shellcheck disable=SC2086
+configure_and_build build-asan address,undefined $programs test_kinematics
+run asan+ubsan build-asan/test_kinematics
+for suffix in "" _EulerRates; do
+  run asan+ubsan "build-asan/test_fmi2_calls$suffix"
+  run asan+ubsan "build-asan/test_fmi2_instances$suffix" 1000 4 "$steps"
+  run asan+ubsan "build-asan/soak_fmi2$suffix" "$soak" --no-rss-check
+done
+
+# The instrumented binaries inside a real master: the whole pytest suite through fmpy.
+# Leak detection is off here only because the Python interpreter itself does not free everything
+# at exit; the FMU's leaks are checked by the C programs above and by valgrind below.
+configure_and_build build-asan address,undefined fmu_AngularKinematics fmu_EulerRates model_info_AngularKinematics model_info_EulerRates
+echo "--- asan+ubsan: pytest through fmpy with build-asan/dist/{AngularKinematics,EulerRates}.fmu"
+AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asan/dist/EulerRates.fmu" \
+  LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)" \
+  ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest tests -q -p no:cacheprovider \
+  | tail -1
+
+echo "=== ThreadSanitizer (gcc, build-tsan/)"
+configure_and_build build-tsan thread test_fmi2_instances test_fmi2_instances_EulerRates
+for suffix in "" _EulerRates; do
+  run tsan "build-tsan/test_fmi2_instances$suffix" 1000 4 "$steps"
+  run tsan "build-tsan/test_fmi2_instances$suffix" 64 8 "$steps"
+done
+
+echo "=== valgrind memcheck (the normal build, build/)"
+bash scripts/build.sh >/dev/null
+memcheck() { # program, arguments...: valgrind's summary printed, any error or leak fails
+  local log
+  log="build/memcheck-$(basename "$1").log"
+  echo "--- memcheck: $*"
+  valgrind --error-exitcode=99 --leak-check=full --show-leak-kinds=all --errors-for-leak-kinds=all \
+    --log-file="$log" "$@"
+  grep -E "ERROR SUMMARY|in use at exit|total heap usage" "$log" | sed 's/^==[0-9]*== /    valgrind: /'
+}
+memcheck build/test_kinematics
+for suffix in "" _EulerRates; do
+  memcheck "build/test_fmi2_calls$suffix"
+  memcheck "build/test_fmi2_instances$suffix" 1000 4 "$valgrind_steps"
+  memcheck "build/soak_fmi2$suffix" "$valgrind_soak" --no-rss-check
+done
+
+echo "check_sanitizers: ASan+UBSan, TSan and memcheck: 0 errors, 0 leaks"

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Fuzzes the FMI layer of both FMUs with libFuzzer + ASan + UBSan (fmu_src/test/fuzz_fmi2.c, built
+# once per model: build-fuzz/fuzz_fmi2 for AngularKinematics, build-fuzz/fuzz_fmi2_EulerRates),
+# starting from the corpus kept in the repository (fmu_src/test/fuzz_corpus/, one for both models:
+# the encoding is the same).
+#
+#   bash scripts/fuzz.sh [seconds [--keep]]     (default 60 seconds per model)
+#   AK_FUZZ_MODELS=EulerRates bash scripts/fuzz.sh 300     one model only
+#
+# For each model, first every input of the corpus is replayed (a regression test), then one
+# fuzzing process runs for the given time. New inputs go to a scratch folder; with --keep the ones
+# that add coverage are merged into the repository's corpus (commit them). A crashing input is
+# written to build-fuzz/crash-* and fails the run; replay it with
+#   AK_FUZZ_TRACE=1 build-fuzz/fuzz_fmi2 build-fuzz/crash-...
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+keep=${2:-}
+models=${AK_FUZZ_MODELS:-AngularKinematics EulerRates}
+corpus=fmu_src/test/fuzz_corpus
+
+bash scripts/setup.sh
+bash scripts/setup_abuse_tools.sh
+mkdir -p build-fuzz
+if ! CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAK_SANITIZE=fuzzer \
+    -DPython3_EXECUTABLE="$PWD/.venv/bin/python" -DAK_DIST_DIR="$PWD/build-fuzz/dist" \
+    >build-fuzz/configure.log 2>&1; then
+  cat build-fuzz/configure.log
+  exit 1
+fi
+cmake --build build-fuzz --parallel 2 --target fuzz_fmi2 fuzz_fmi2_EulerRates \
+  >build-fuzz/build.log 2>&1 || {
+  cat build-fuzz/build.log
+  exit 1
+}
+
+if [ ! -d "$corpus" ] || [ -z "$(ls -A "$corpus")" ]; then
+  .venv/bin/python fmu_src/test/fuzz_seeds.py "$corpus"
+fi
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+for model in $models; do
+  if [ "$model" = AngularKinematics ]; then fuzzer=build-fuzz/fuzz_fmi2; else fuzzer=build-fuzz/fuzz_fmi2_$model; fi
+  echo "fuzz ($model): replaying the $(ls "$corpus" | wc -l) inputs of $corpus"
+  if ! "$fuzzer" -runs=0 "$corpus" >"build-fuzz/replay-$model.log" 2>&1; then
+    tail -60 "build-fuzz/replay-$model.log"
+    echo "fuzz ($model): FAILED replaying the corpus"
+    exit 1
+  fi
+  grep -E "INITED|DONE" "build-fuzz/replay-$model.log"
+
+  mkdir -p "$scratch/$model"
+  echo "fuzz ($model): fuzzing for $seconds s"
+  "$fuzzer" -max_total_time="$seconds" -print_final_stats=1 \
+    -artifact_prefix=build-fuzz/ "$scratch/$model" "$corpus" >"build-fuzz/fuzz-$model.log" 2>&1 || {
+    tail -60 "build-fuzz/fuzz-$model.log"
+    echo "fuzz ($model): FAILED, crashing input in build-fuzz/"
+    exit 1
+  }
+  grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" \
+    "build-fuzz/fuzz-$model.log" | sed "s/^/    /"
+  echo "fuzz ($model): 0 crashes in $seconds s"
+
+  if [ "$keep" = --keep ]; then
+    before=$(ls "$corpus" | wc -l)
+    "$fuzzer" -merge=1 "$corpus" "$scratch/$model" >"build-fuzz/merge-$model.log" 2>&1
+    echo "fuzz ($model): corpus $corpus: $before -> $(ls "$corpus" | wc -l) inputs"
+  fi
+done

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Soak: one instance through many steps with inputs changing every step (build/soak_fmi2 for
+# AngularKinematics, then build/soak_fmi2_EulerRates; normal optimized build). Prints steps/s and the resident memory at the start and the end; fails on any
+# failed call, drifted output, logged message, allocation during the run, or memory growth.
+#   bash scripts/soak.sh [steps]      (default 10000000)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+steps=${1:-10000000}
+bash scripts/setup.sh
+bash scripts/build.sh >/dev/null
+build/soak_fmi2 "$steps"
+build/soak_fmi2_EulerRates "$steps"
