@@ -19,34 +19,42 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- values ------------------------------------------------------------------------------ */
     {STEP_COMPLETE, "fmi2SetReal(c, {0, 25}, 2, {7, 7})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){0, 25}, .nvr = 2, .values = (fmi2Real[]){7.0, 7.0}},
-     fmi2Error, "fmi2SetReal: vr[1] = 25 is not a value reference of this FMU (0 to 24)", false},
+     fmi2Error,
+     "fmi2SetReal: vr[1] = 25 is not a value reference of this FMU (0 to 24)", false},
     {STEP_COMPLETE, "fmi2SetReal(c, {9}, 1, {1})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){9}, .nvr = 1, .values = (fmi2Real[]){1.0}}, fmi2Error,
      "fmi2SetReal: vr[0] = 9 is theta_dot[1], an output: only inputs and parameters can be "
      "set; no value set", false},
     {STEP_COMPLETE, "fmi2SetReal(c, {0, 5}, 2, {2.5, NAN})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){0, 5}, .nvr = 2, .values = (fmi2Real[]){2.5, NAN}},
-     fmi2Error, "fmi2SetReal: omega[3] = nan (vr[1] = 5) is not finite; no value set", false},
+     fmi2Error,
+     "fmi2SetReal: omega[3] = nan (vr[1] = 5) is not finite; no value set", false},
     {EVENT_MODE, "fmi2SetReal(c, {8}, 1, {INFINITY})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){8}, .nvr = 1, .values = (fmi2Real[]){INFINITY}},
-     fmi2Error, "fmi2SetReal: omega_dot[3] = inf (vr[0] = 8) is not finite; no value set", false},
+     fmi2Error,
+     "fmi2SetReal: omega_dot[3] = inf (vr[0] = 8) is not finite; no value "
+     "set", false},
     {STEP_COMPLETE, "fmi2GetInteger(c, {24}, 1, v)", AK_OP_GET_INTEGER,
      {.vr = (const fmi2ValueReference[]){24}, .nvr = 1, .values = (fmi2Integer[1]){0}},
-     fmi2Error, "fmi2GetInteger: vr[0] = 24 is tolerance, of type Real, not Integer", false},
+     fmi2Error,
+     "fmi2GetInteger: vr[0] = 24 is tolerance, of type Real, not Integer", false},
 
     /* --- parameters: sequence (1 to 24), frame (1 fixed, 2 body), tolerance in [0, 1]; fixed ---- */
     {INSTANTIATED, "fmi2SetInteger(c, {22}, 1, {0})", AK_OP_SET_INTEGER,
      {.vr = (const fmi2ValueReference[]){22}, .nvr = 1, .values = (fmi2Integer[]){0}},
-     fmi2Error, "fmi2SetInteger: sequence = 0 (vr[0] = 22) is not an item of the Enumeration Sequence "
-     "(1 body123 .. 24 space323); no value set", false},
+     fmi2Error,
+     "fmi2SetInteger: sequence = 0 (vr[0] = 22) is not an item of the "
+     "Enumeration Sequence (1 body123 .. 24 space323); no value set", false},
     {INSTANTIATED, "fmi2SetInteger(c, {22, 23}, 2, {3, 3})", AK_OP_SET_INTEGER,
      {.vr = (const fmi2ValueReference[]){22, 23}, .nvr = 2, .values = (fmi2Integer[]){3, 3}},
-     fmi2Error, "fmi2SetInteger: frame = 3 (vr[1] = 23) is not an item of the Enumeration Frame (1 "
-     "fixed, 2 body); no value set", false},
+     fmi2Error,
+     "fmi2SetInteger: frame = 3 (vr[1] = 23) is not an item of the "
+     "Enumeration Frame (1 fixed, 2 body); no value set", false},
     {INITIALIZATION_MODE, "fmi2SetReal(c, {24}, 1, {-1e-9})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){24}, .nvr = 1, .values = (fmi2Real[]){-1e-9}},
-     fmi2Error, "fmi2SetReal: tolerance = -1.0000000000000001e-09 (vr[0] = 24) is outside [0, 1], the "
-     "range of singularity_distance; no value set", false},
+     fmi2Error,
+     "fmi2SetReal: tolerance = -1.0000000000000001e-09 (vr[0] = 24) is "
+     "outside [0, 1], the range of singularity_distance; no value set", false},
     {INSTANTIATED, "fmi2SetReal(c, {24}, 1, {NAN})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){24}, .nvr = 1, .values = (fmi2Real[]){NAN}}, fmi2Error,
      "fmi2SetReal: tolerance = nan (vr[0] = 24) is not finite; no value set", false},
@@ -56,8 +64,10 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
      "only in Instantiated and InitializationMode, not in StepComplete; no value set", false},
     {EVENT_MODE, "fmi2SetInteger(c, {23}, 1, {2})", AK_OP_SET_INTEGER,
      {.vr = (const fmi2ValueReference[]){23}, .nvr = 1, .values = (fmi2Integer[]){2}},
-     fmi2Error, "fmi2SetInteger: frame (vr[0] = 23) is a parameter of variability fixed: it can be set "
-     "only in Instantiated and InitializationMode, not in EventMode; no value set", false},
+     fmi2Error,
+     "fmi2SetInteger: frame (vr[0] = 23) is a parameter of variability "
+     "fixed: it can be set only in Instantiated and InitializationMode, not "
+     "in EventMode; no value set", false},
 
     /* --- a step that failed at the singular configuration (theta[2] = pi/2 for body123) -------- */
     {STEP_FAILED, "fmi2GetReal(c, {9}, 1, v)", AK_OP_GET_REAL,
@@ -76,32 +86,39 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
      AK_OP_GET_DIRECTIONAL_DERIVATIVE,
      {.vr = (const fmi2ValueReference[]){9}, .nvr = 1, .vr2 = (const fmi2ValueReference[]){0},
       .nvr2 = 1, .known = (fmi2Real[]){1.0}, .values2 = (fmi2Real[1]){0}},
-     fmi2Error, "fmi2GetDirectionalDerivative: not provided by EulerRates (modelDescription.xml: "
-     "providesDirectionalDerivative=\"false\")", false},
+     fmi2Error,
+     "fmi2GetDirectionalDerivative: not provided by EulerRates "
+     "(modelDescription.xml: providesDirectionalDerivative=\"false\")", false},
     {STEP_COMPLETE, "fmi2GetRealOutputDerivatives(c, {9}, 1, {1}, v)",
      AK_OP_GET_REAL_OUTPUT_DERIVATIVES,
      {.vr = (const fmi2ValueReference[]){9}, .nvr = 1, .values2 = (fmi2Integer[]){1},
       .values = (fmi2Real[1]){0}},
-     fmi2Error, "fmi2GetRealOutputDerivatives: not provided by EulerRates (modelDescription.xml: "
-     "maxOutputDerivativeOrder=\"0\")", false},
+     fmi2Error,
+     "fmi2GetRealOutputDerivatives: not provided by EulerRates "
+     "(modelDescription.xml: maxOutputDerivativeOrder=\"0\")", false},
     {STEP_COMPLETE, "fmi2SetRealInputDerivatives(c, {9}, 1, {1}, {1})",
      AK_OP_SET_REAL_INPUT_DERIVATIVES,
      {.vr = (const fmi2ValueReference[]){9}, .nvr = 1, .values2 = (fmi2Integer[]){1},
       .values = (fmi2Real[]){1.0}},
-     fmi2Error, "fmi2SetRealInputDerivatives: vr[0] = 9 is theta_dot[1], an output; expected an input", false},
+     fmi2Error,
+     "fmi2SetRealInputDerivatives: vr[0] = 9 is theta_dot[1], an output; "
+     "expected an input", false},
 
     /* --- FMU state: messages naming the model or its state's size -------------------------- */
     {STEP_COMPLETE, "fmi2SerializeFMUstate(c, state, bytes, 8)", AK_OP_SERIALIZE_FMU_STATE,
-     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error, "fmi2SerializeFMUstate: size = 8 is too small; the state needs 436 bytes "
-     "(fmi2SerializedFMUstateSize)", .with_fmu_state = true},
+     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error,
+     "fmi2SerializeFMUstate: size = 8 is too small; the state needs 436 "
+     "bytes (fmi2SerializedFMUstateSize)", .with_fmu_state = true},
     {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, {0, 0, 0, 0, 0, 0, 0, 0}, 8, &state)",
      AK_OP_DE_SERIALIZE_FMU_STATE,
-     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8, .out = (fmi2FMUstate[1]){NULL}}, fmi2Error, "fmi2DeSerializeFMUstate: the 8 bytes are not an EulerRates FMU state (too short "
-     "for the header)", false},
+     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8, .out = (fmi2FMUstate[1]){NULL}}, fmi2Error,
+     "fmi2DeSerializeFMUstate: the 8 bytes are not an EulerRates FMU state "
+     "(too short for the header)", false},
     {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, 64 bytes \"AKFMUSTA...\", 64, &state)",
      AK_OP_DE_SERIALIZE_FMU_STATE,
      {.bytes = (fmi2Byte[64]){"AKFMUSTATE"}, .n_bytes = 64, .out = (fmi2FMUstate[1]){NULL}},
-     fmi2Error, "fmi2DeSerializeFMUstate: the 64 bytes are not an EulerRates FMU state (wrong "
-     "magic bytes)", false},
+     fmi2Error,
+     "fmi2DeSerializeFMUstate: the 64 bytes are not an EulerRates FMU state "
+     "(wrong magic bytes)", false},
 };
 const size_t AK_N_MODEL_BAD_CALLS = sizeof AK_MODEL_BAD_CALLS / sizeof AK_MODEL_BAD_CALLS[0];

@@ -25,7 +25,8 @@ const ak_bad_call AK_BAD_CALLS[] = {
      "fmi2SetupExperiment: tolerance = nan must be finite and >= 0", false},
     {INSTANTIATED, "fmi2SetupExperiment(c, fmi2True, -1e-6, 0, fmi2False, 0)",
      AK_OP_SETUP_EXPERIMENT, {.flag = {fmi2True, fmi2False}, .real = {-1e-6, 0.0, 0.0}},
-     fmi2Error, "fmi2SetupExperiment: tolerance = -1e-06 must be finite and >= 0", false},
+     fmi2Error,
+     "fmi2SetupExperiment: tolerance = -1e-06 must be finite and >= 0", false},
     {INSTANTIATED, "fmi2SetupExperiment(c, fmi2False, 0, INFINITY, fmi2False, 0)",
      AK_OP_SETUP_EXPERIMENT, {.flag = {fmi2False, fmi2False}, .real = {0.0, INFINITY, 0.0}},
      fmi2Error, "fmi2SetupExperiment: startTime = inf is not finite", false},
@@ -36,11 +37,13 @@ const ak_bad_call AK_BAD_CALLS[] = {
      AK_OP_SETUP_EXPERIMENT, {.flag = {fmi2False, fmi2True}, .real = {0.0, 0.0, NAN}}, fmi2Error,
      "fmi2SetupExperiment: stopTime = nan must be finite and >= startTime = 0", false},
     {INSTANTIATED, "fmi2ExitInitializationMode(c)", AK_OP_EXIT_INITIALIZATION_MODE, {0},
-     fmi2Error, "fmi2ExitInitializationMode: illegal call in state Instantiated", false},
+     fmi2Error,
+     "fmi2ExitInitializationMode: illegal call in state Instantiated", false},
     {INSTANTIATED, "fmi2Terminate(c)", AK_OP_TERMINATE, {0}, fmi2Error,
      "fmi2Terminate: illegal call in state Instantiated", false},
     {INITIALIZATION_MODE, "fmi2EnterInitializationMode(c)", AK_OP_ENTER_INITIALIZATION_MODE, {0},
-     fmi2Error, "fmi2EnterInitializationMode: illegal call in state InitializationMode", false},
+     fmi2Error,
+     "fmi2EnterInitializationMode: illegal call in state InitializationMode", false},
     {STEP_COMPLETE, "fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0)",
      AK_OP_SETUP_EXPERIMENT, {0}, fmi2Error,
      "fmi2SetupExperiment: illegal call in state StepComplete", false},
@@ -157,17 +160,23 @@ const ak_bad_call AK_BAD_CALLS[] = {
 
     /* --- FMU state ---------------------------------------------------------------------------- */
     {STEP_COMPLETE, "fmi2GetFMUstate(c, NULL)", AK_OP_GET_FMU_STATE, {0}, fmi2Error, "fmi2GetFMUstate: FMUstate is NULL", false},
-    {STEP_COMPLETE, "fmi2SetFMUstate(c, NULL)", AK_OP_SET_FMU_STATE, {0}, fmi2Error, "fmi2SetFMUstate: FMUstate NULL is not an FMU state made by fmi2GetFMUstate or "
-     "fmi2DeSerializeFMUstate of this FMU (or it was freed)", false},
+    {STEP_COMPLETE, "fmi2SetFMUstate(c, NULL)", AK_OP_SET_FMU_STATE, {0}, fmi2Error,
+     "fmi2SetFMUstate: FMUstate NULL is not an FMU state made by "
+     "fmi2GetFMUstate or fmi2DeSerializeFMUstate of this FMU (or it was "
+     "freed)", false},
     {STEP_COMPLETE, "fmi2FreeFMUstate(c, NULL)", AK_OP_FREE_FMU_STATE, {0}, fmi2Error, "fmi2FreeFMUstate: FMUstate is NULL", false},
     {STEP_COMPLETE, "fmi2SerializedFMUstateSize(c, NULL, &size)",
-     AK_OP_SERIALIZED_FMU_STATE_SIZE, {.out = (size_t[1]){0}}, fmi2Error, "fmi2SerializedFMUstateSize: FMUstate NULL is not an FMU state made by fmi2GetFMUstate "
-     "or fmi2DeSerializeFMUstate of this FMU (or it was freed)", false},
+     AK_OP_SERIALIZED_FMU_STATE_SIZE, {.out = (size_t[1]){0}}, fmi2Error,
+     "fmi2SerializedFMUstateSize: FMUstate NULL is not an FMU state made by "
+     "fmi2GetFMUstate or fmi2DeSerializeFMUstate of this FMU (or it was "
+     "freed)", false},
     {STEP_COMPLETE, "fmi2SerializedFMUstateSize(c, state, NULL)", AK_OP_SERIALIZED_FMU_STATE_SIZE,
      {0}, fmi2Error, "fmi2SerializedFMUstateSize: size is NULL", .with_fmu_state = true},
     {STEP_COMPLETE, "fmi2SerializeFMUstate(c, NULL, bytes, 8)", AK_OP_SERIALIZE_FMU_STATE,
-     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error, "fmi2SerializeFMUstate: FMUstate NULL is not an FMU state made by fmi2GetFMUstate or "
-     "fmi2DeSerializeFMUstate of this FMU (or it was freed)", false},
+     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error,
+     "fmi2SerializeFMUstate: FMUstate NULL is not an FMU state made by "
+     "fmi2GetFMUstate or fmi2DeSerializeFMUstate of this FMU (or it was "
+     "freed)", false},
     {STEP_COMPLETE, "fmi2SerializeFMUstate(c, state, NULL, 4096)", AK_OP_SERIALIZE_FMU_STATE,
      {.n_bytes = 4096}, fmi2Error, "fmi2SerializeFMUstate: serializedState is NULL", .with_fmu_state = true},
     {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, NULL, 8, &state)", AK_OP_DE_SERIALIZE_FMU_STATE,
@@ -187,36 +196,45 @@ const ak_bad_call AK_BAD_CALLS[] = {
     {EVENT_MODE, "fmi2SetTime(c, -INFINITY)", AK_OP_SET_TIME, {.real = {-INFINITY}}, fmi2Error,
      "fmi2SetTime: time = -inf is not finite", false},
     {CONTINUOUS_TIME_MODE, "fmi2SetContinuousStates(c, {1}, 1)", AK_OP_SET_CONTINUOUS_STATES,
-     {.nvr = 1, .values2 = (fmi2Real[]){1.0}}, fmi2Error, "fmi2SetContinuousStates: nx = 1, but this FMU has no continuous states and no event "
-     "indicators (nx must be 0)", false},
+     {.nvr = 1, .values2 = (fmi2Real[]){1.0}}, fmi2Error,
+     "fmi2SetContinuousStates: nx = 1, but this FMU has no continuous "
+     "states and no event indicators (nx must be 0)", false},
     {CONTINUOUS_TIME_MODE, "fmi2GetDerivatives(c, dx, 1)", AK_OP_GET_DERIVATIVES,
-     {.nvr = 1, .values2 = (fmi2Real[1]){0}}, fmi2Error, "fmi2GetDerivatives: nx = 1, but this FMU has no continuous states and no event "
-     "indicators (nx must be 0)", false},
+     {.nvr = 1, .values2 = (fmi2Real[1]){0}}, fmi2Error,
+     "fmi2GetDerivatives: nx = 1, but this FMU has no continuous states and "
+     "no event indicators (nx must be 0)", false},
     {EVENT_MODE, "fmi2GetEventIndicators(c, z, 3)", AK_OP_GET_EVENT_INDICATORS,
-     {.nvr = 3, .values2 = (fmi2Real[3]){0}}, fmi2Error, "fmi2GetEventIndicators: ni = 3, but this FMU has no continuous states and no event "
-     "indicators (ni must be 0)", false},
+     {.nvr = 3, .values2 = (fmi2Real[3]){0}}, fmi2Error,
+     "fmi2GetEventIndicators: ni = 3, but this FMU has no continuous states "
+     "and no event indicators (ni must be 0)", false},
     {ME_TERMINATED, "fmi2GetContinuousStates(c, x, 1)", AK_OP_GET_CONTINUOUS_STATES,
-     {.nvr = 1, .values2 = (fmi2Real[1]){0}}, fmi2Error, "fmi2GetContinuousStates: nx = 1, but this FMU has no continuous states and no event "
-     "indicators (nx must be 0)", false},
+     {.nvr = 1, .values2 = (fmi2Real[1]){0}}, fmi2Error,
+     "fmi2GetContinuousStates: nx = 1, but this FMU has no continuous "
+     "states and no event indicators (nx must be 0)", false},
     {ME_INSTANTIATED, "fmi2GetNominalsOfContinuousStates(c, x, 2)",
      AK_OP_GET_NOMINALS_OF_CONTINUOUS_STATES, {.nvr = 2, .values2 = (fmi2Real[2]){0}}, fmi2Error,
      "fmi2GetNominalsOfContinuousStates: nx = 2, but this FMU has no continuous states and "
      "no event indicators (nx must be 0)", false},
     {CONTINUOUS_TIME_MODE, "fmi2EnterContinuousTimeMode(c)", AK_OP_ENTER_CONTINUOUS_TIME_MODE,
-     {0}, fmi2Error, "fmi2EnterContinuousTimeMode: illegal call in state ContinuousTimeMode", false},
+     {0}, fmi2Error,
+     "fmi2EnterContinuousTimeMode: illegal call in state ContinuousTimeMode", false},
     {CONTINUOUS_TIME_MODE, "fmi2NewDiscreteStates(c, &eventInfo)", AK_OP_NEW_DISCRETE_STATES,
      {.out = (fmi2EventInfo[1]){{0}}}, fmi2Error,
      "fmi2NewDiscreteStates: illegal call in state ContinuousTimeMode", false},
     {EVENT_MODE, "fmi2DoStep(c, 0, 0.1, fmi2True)", AK_OP_DO_STEP,
-     {.real = {0.0, 0.1}, .flag = {fmi2True}}, fmi2Error, "fmi2DoStep: a co-simulation function, but this instance was created for model exchange "
-     "(fmi2ModelExchange)", false},
+     {.real = {0.0, 0.1}, .flag = {fmi2True}}, fmi2Error,
+     "fmi2DoStep: a co-simulation function, but this instance was created "
+     "for model exchange (fmi2ModelExchange)", false},
     {ME_TERMINATED, "fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &r)", AK_OP_GET_REAL_STATUS,
-     {.kind = fmi2LastSuccessfulTime, .out = (fmi2Real[1]){0}}, fmi2Error, "fmi2GetRealStatus: a co-simulation function, but this instance was created for model "
-     "exchange (fmi2ModelExchange)", false},
-    {STEP_COMPLETE, "fmi2SetTime(c, 2)", AK_OP_SET_TIME, {.real = {2.0}}, fmi2Error, "fmi2SetTime: a model-exchange function, but this instance was created for "
-     "co-simulation (fmi2CoSimulation)", false},
-    {STEP_COMPLETE, "fmi2GetDerivatives(c, NULL, 0)", AK_OP_GET_DERIVATIVES, {0}, fmi2Error, "fmi2GetDerivatives: a model-exchange function, but this instance was created for "
-     "co-simulation (fmi2CoSimulation)", false},
+     {.kind = fmi2LastSuccessfulTime, .out = (fmi2Real[1]){0}}, fmi2Error,
+     "fmi2GetRealStatus: a co-simulation function, but this instance was "
+     "created for model exchange (fmi2ModelExchange)", false},
+    {STEP_COMPLETE, "fmi2SetTime(c, 2)", AK_OP_SET_TIME, {.real = {2.0}}, fmi2Error,
+     "fmi2SetTime: a model-exchange function, but this instance was created "
+     "for co-simulation (fmi2CoSimulation)", false},
+    {STEP_COMPLETE, "fmi2GetDerivatives(c, NULL, 0)", AK_OP_GET_DERIVATIVES, {0}, fmi2Error,
+     "fmi2GetDerivatives: a model-exchange function, but this instance was "
+     "created for co-simulation (fmi2CoSimulation)", false},
 };
 const size_t AK_N_BAD_CALLS = sizeof AK_BAD_CALLS / sizeof AK_BAD_CALLS[0];
 
