@@ -12,22 +12,32 @@ FREQUENCY = np.array([1.3, 0.9, 2.1])
 PHASE = np.array([0.0, 0.4, 1.0])
 
 
-def tumbling(times):
-    """(theta, theta_dot, theta_ddot), each len(times) x 3."""
+def sinusoidal(times, rate, amplitude, frequency, phase):
+    """(theta, theta_dot, theta_ddot), each len(times) x 3, of
+    theta_i(t) = rate_i t + amplitude_i sin(frequency_i t + phase_i)."""
     t = np.asarray(times, dtype=float)[:, None]
-    argument = FREQUENCY * t + PHASE
-    theta = RATE * t + AMPLITUDE * np.sin(argument)
-    theta_dot = RATE + AMPLITUDE * FREQUENCY * np.cos(argument)
-    theta_ddot = -AMPLITUDE * FREQUENCY ** 2 * np.sin(argument)
+    argument = frequency * t + phase
+    theta = rate * t + amplitude * np.sin(argument)
+    theta_dot = rate + amplitude * frequency * np.cos(argument)
+    theta_ddot = -amplitude * frequency ** 2 * np.sin(argument)
     return theta, theta_dot, theta_ddot
 
 
-def input_signals(times):
+def tumbling(times):
+    """(theta, theta_dot, theta_ddot) of the demonstration's tumbling body."""
+    return sinusoidal(times, RATE, AMPLITUDE, FREQUENCY, PHASE)
+
+
+def as_input_signals(times, theta, theta_dot, theta_ddot):
     """A structured array with 'time' and the nine inputs, as simulate_fmu takes it."""
-    theta, theta_dot, theta_ddot = tumbling(times)
     columns = np.hstack([theta, theta_dot, theta_ddot])
     signals = np.zeros(len(times), dtype=[("time", float)] + [(name, float) for name in INPUT_NAMES])
     signals["time"] = times
     for k, name in enumerate(INPUT_NAMES):
         signals[name] = columns[:, k]
     return signals
+
+
+def input_signals(times):
+    """The demonstration's inputs as simulate_fmu takes them."""
+    return as_input_signals(times, *tumbling(times))

@@ -8,8 +8,8 @@ not exceed --tolerance. The client collects every case's figures, writes them to
 with status 1 if any case fails.
 
 By default the sweep runs on a LocalCluster of worker processes that listen on 127.0.0.1 only.
---scheduler ADDRESS (e.g. tcp://10.0.0.5:8786) uses an existing cluster instead: the FMU's bytes and
-the reference module are sent to its workers, which need the packages of requirements.txt (fmpy,
+--scheduler ADDRESS (e.g. tcp://10.0.0.5:8786) uses an existing cluster instead: the FMU's bytes,
+the reference module and the trajectory module (demo/trajectories.py) are sent to its workers, which need the packages of requirements.txt (fmpy,
 numpy, sympy, mpmath) but no shared file system.
 
     .venv/bin/python examples/dask_sweep.py --count 200             # local cluster, 2 workers
@@ -46,17 +46,9 @@ def sweep_cases(count, seed):
 
 def input_signals(case, times):
     """The nine inputs of a case, exact derivatives included, as fmpy's structured input array."""
-    t = times[:, None]
-    argument = case["frequency"] * t + case["phase"]
-    theta = case["rate"] * t + case["amplitude"] * np.sin(argument)
-    theta_dot = case["rate"] + case["amplitude"] * case["frequency"] * np.cos(argument)
-    theta_ddot = -case["amplitude"] * case["frequency"] ** 2 * np.sin(argument)
-    columns = np.hstack([theta, theta_dot, theta_ddot])
-    signals = np.zeros(len(times), dtype=[("time", float)] + [(name, float) for name in INPUT_NAMES])
-    signals["time"] = times
-    for k, name in enumerate(INPUT_NAMES):
-        signals[name] = columns[:, k]
-    return signals
+    import trajectories  # demo/trajectories.py, sent to the workers by Client.upload_file
+    return trajectories.as_input_signals(times, *trajectories.sinusoidal(
+        times, case["rate"], case["amplitude"], case["frequency"], case["phase"]))
 
 
 def unpacked_fmu(fmu_bytes):
@@ -128,6 +120,7 @@ def main(argv=None):
     started = time.perf_counter()
     try:
         client.upload_file(str(ROOT / "tests" / "reference.py"))
+        client.upload_file(str(ROOT / "demo" / "trajectories.py"))
         fmu_future = client.scatter(fmu_bytes, broadcast=True)
         futures = [client.submit(run_case, case, fmu_future, args.stop_time, args.step,
                                  args.check_every, pure=False)
