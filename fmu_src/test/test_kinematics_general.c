@@ -9,6 +9,7 @@
  *   - body123 against the hand-written 1-2-3 core of kinematics.c.
  */
 #include "kinematics.h"
+#include "rotation_matrices.h"
 #include "kinematics_general.h"
 #include "sequences.h"
 
@@ -48,41 +49,13 @@ static double random_rate(void) {
     return pow(10.0, random_in(-3.0, 3.0)) * (rand() % 2 ? 1.0 : -1.0);
 }
 
-static void elementary_rotation(int axis, double angle, double M[3][3], double dM[3][3]) {
-    const double s = sin(angle), c = cos(angle);
-    const int i = axis % 3, j = (axis + 1) % 3;
-    for (int r = 0; r < 3; r++) {
-        for (int k = 0; k < 3; k++) {
-            M[r][k] = (r == k) ? 1.0 : 0.0;
-            dM[r][k] = 0.0;
-        }
-    }
-    M[i][i] = c;
-    M[i][j] = -s;
-    M[j][i] = s;
-    M[j][j] = c;
-    dM[i][i] = -s;
-    dM[i][j] = -c;
-    dM[j][i] = c;
-    dM[j][j] = -s;
-}
-
-static void multiply(double A[3][3], double B[3][3], double C[3][3]) {
-    for (int r = 0; r < 3; r++) {
-        for (int k = 0; k < 3; k++) {
-            C[r][k] = A[r][0] * B[0][k] + A[r][1] * B[1][k] + A[r][2] * B[2][k];
-        }
-    }
-}
-
 /* R and dR/dt as the product in the order the sequence states: M[k] belongs to theta_k. */
 static void reference_rotation(const ak_sequence *seq, const double theta[3], const double td[3],
                                double R[3][3], double Rdot[3][3]) {
     double M[3][3][3], dM[3][3][3];
     int order[3];
     for (int k = 0; k < 3; k++) {
-        /* axis 1 -> rotation in the (2,3) plane: elementary_rotation takes the first index of it */
-        elementary_rotation(seq->axes[k] % 3, theta[k], M[k], dM[k]);
+        elementary_rotation(seq->axes[k] - 1, theta[k], M[k], dM[k]);
         order[k] = (seq->kind == AK_BODY_FIXED) ? k : 2 - k;
     }
     double P[3][3], Q[3][3];
