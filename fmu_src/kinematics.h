@@ -31,35 +31,10 @@
  *                [   C2 td2                   0       0 ]
  *   (The course note's body-frame equation (4) multiplies W' by td instead of tdd: a typo.)
  *
- * Jacobian (ak_angular_kinematics_123_jacobian)
- *   J[i][j] = d output_i / d input_j, outputs in the order omega_fixed, omega_body, alpha_fixed,
- *   alpha_body, inputs in the order theta, td, tdd (the FMU's value-reference order). With the
- *   columns d/dtheta2 and d/dtheta3 (d/dtheta1 of the body components and d/dtheta3 of the
- *   fixed components are zero):
- *     d omega_fixed / d theta1 = [ 0, -S1 td2 - C1 C2 td3,  C1 td2 - S1 C2 td3 ]
- *     d omega_fixed / d theta2 = [ C2 td3,  S1 S2 td3,  -C1 S2 td3 ]
- *     d omega_body  / d theta2 = [ -S2 C3 td1,  S2 S3 td1,  C2 td1 ]
- *     d omega_body  / d theta3 = [ -C2 S3 td1 + C3 td2,  -C2 C3 td1 - S3 td2,  0 ]
- *     d omega / d td = W (fixed) and W' (body); d omega / d tdd = 0
- *     d alpha / d tdd = W (fixed) and W' (body)
- *     d alpha / d td  = d(dW/dt td)/d td and d(dW'/dt td)/d td, i.e. for the fixed components
- *         [ 0                    C2 td3                C2 td2               ]
- *         [ -S1 td2 - C1 C2 td3  -S1 td1 + S1 S2 td3   S1 S2 td2 - C1 C2 td1 ]
- *         [ C1 td2 - S1 C2 td3   C1 td1 - C1 S2 td3  -(S1 C2 td1 + C1 S2 td2)]
- *       and for the body components
- *         [ -(S2 C3 td2 + C2 S3 td3)  -S2 C3 td1 + C3 td3   -C2 S3 td1 + C3 td2 ]
- *         [   S2 S3 td2 - C2 C3 td3    S2 S3 td1 - S3 td3   -C2 C3 td1 - S3 td2 ]
- *         [   C2 td2                   C2 td1                0                  ]
- *     d alpha / d theta: the theta-derivatives of the alpha equations above, term by term
- *       (written out in kinematics.c; checked against finite differences in the unit tests).
- *
- * Angular jerk (ak_angular_jerk_123)
- *   The time derivative of alpha along a motion where td and tdd are the first and second
- *   derivatives of theta and tddd the third: by the chain rule
- *       d alpha / dt = (d alpha / d theta) td + (d alpha / d td) tdd + (d alpha / d tdd) tddd
- *   with the Jacobian blocks above, in both sets of components (d alpha_body/dt are the
- *   derivatives of the body components, as for alpha itself). The derivative of omega along
- *   such a motion is alpha itself.
+ * Derivatives
+ *   The exact Jacobian of these outputs and the angular jerk d(alpha)/dt, for this and every other
+ *   sequence, are those of the general core (kinematics_general_jacobian.h); for body123 its
+ *   Jacobian is checked against finite differences of this function (test_kinematics_jacobian.c).
  *
  * Units
  *   theta in rad, theta_dot and omega in rad/s, theta_ddot and alpha in rad/s^2.
@@ -74,18 +49,6 @@
 void ak_angular_kinematics_123(const double theta[3], const double theta_dot[3],
                                const double theta_ddot[3], double omega_fixed[3],
                                double omega_body[3], double alpha_fixed[3], double alpha_body[3]);
-
-enum { AK_KINEMATICS_N_INPUTS = 9, AK_KINEMATICS_N_OUTPUTS = 12 };
-
-/* Exact partial derivatives of the 12 outputs with respect to the 9 inputs (see above). */
-void ak_angular_kinematics_123_jacobian(const double theta[3], const double theta_dot[3],
-                                        const double theta_ddot[3],
-                                        double J[AK_KINEMATICS_N_OUTPUTS][AK_KINEMATICS_N_INPUTS]);
-
-/* Time derivative of alpha in both sets of components, given the third derivative of theta. */
-void ak_angular_jerk_123(const double theta[3], const double theta_dot[3],
-                         const double theta_ddot[3], const double theta_dddot[3],
-                         double jerk_fixed[3], double jerk_body[3]);
 
 /* Direction cosine matrix R (row-major), mapping body components to fixed components. */
 void ak_rotation_matrix_123(const double theta[3], double R[3][3]);

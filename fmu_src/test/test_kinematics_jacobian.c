@@ -1,18 +1,24 @@
-/* Unit tests of the analytic Jacobian and the angular jerk of the kinematics core.
+/* Unit tests of the analytic Jacobian of the general core (kinematics_general_jacobian.h), for
+ * the default sequence body123, against the hand-written 1-2-3 core:
  *
- *   - every column of the Jacobian against a fourth-order central difference of the outputs
- *     with respect to that input;
- *   - every entry that kinematics.h says is structurally zero is exactly zero;
- *   - the jerk against a fourth-order central difference of alpha along the cubic motion
+ *   - every column of the omega and alpha rows against a fourth-order central difference of
+ *     ak_angular_kinematics_123 with respect to that input;
+ *   - every entry that the 1-2-3 equations make structurally zero is exactly zero;
+ *   - the angular jerk the FMU's output derivatives return, the alpha rows applied to
+ *     (td, tdd, tddd), against a fourth-order central difference of alpha along the cubic motion
  *     theta(t) = theta + td t + tdd t^2/2 + tddd t^3/6.
+ * (tests/test_sequences_fmu.py checks all 61 rows for all 24 sequences against sympy.)
  */
 #include "kinematics.h"
+#include "kinematics_general_jacobian.h"
+#include "sequences.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-enum { N_IN = AK_KINEMATICS_N_INPUTS, N_OUT = AK_KINEMATICS_N_OUTPUTS };
+/* The omega and alpha rows: the first 12 outputs of the general core. */
+enum { N_IN = AK_GENERAL_N_INPUTS, N_OUT = 12 };
 
 static int failures = 0;
 static int checks = 0;
@@ -35,8 +41,8 @@ static void outputs(const double u[N_IN], double y[N_OUT]) {
     ak_angular_kinematics_123(&u[0], &u[3], &u[6], &y[0], &y[3], &y[6], &y[9]);
 }
 
-/* Which inputs each output contains, read off the equations of kinematics.h; the same sets as
- * the dependencies of the model's variable table (checked there against sympy). */
+/* Which inputs each output contains, read off the 1-2-3 equations of kinematics.h (reference.py
+ * derives the same sets with sympy). */
 static const int DEPENDS[N_OUT][N_IN] = {
     {0, 1, 0, 1, 0, 1, 0, 0, 0}, {1, 1, 0, 0, 1, 1, 0, 0, 0}, {1, 1, 0, 0, 1, 1, 0, 0, 0},
     {0, 1, 1, 1, 1, 0, 0, 0, 0}, {0, 1, 1, 1, 1, 0, 0, 0, 0}, {0, 1, 0, 1, 0, 1, 0, 0, 0},
@@ -44,9 +50,13 @@ static const int DEPENDS[N_OUT][N_IN] = {
     {0, 1, 1, 1, 1, 1, 1, 1, 0}, {0, 1, 1, 1, 1, 1, 1, 1, 0}, {0, 1, 0, 1, 1, 0, 1, 0, 1},
 };
 
+static void body123_jacobian(const double u[N_IN], double J[AK_GENERAL_N_OUTPUTS][N_IN]) {
+    ak_general_jacobian(&AK_SEQUENCES[0], &u[0], &u[3], &u[6], J);
+}
+
 static void check_jacobian(const double u[N_IN], double scale) {
-    double J[N_OUT][N_IN];
-    ak_angular_kinematics_123_jacobian(&u[0], &u[3], &u[6], J);
+    double J[AK_GENERAL_N_OUTPUTS][N_IN];
+    body123_jacobian(u, J);
     for (int j = 0; j < N_IN; j++) {
         /* A step relative to the input's own size: angles are O(1), rates O(scale). */
         const double h = 1e-3 * (j < 3 ? 1.0 : (j < 6 ? scale : scale * scale));
@@ -74,8 +84,16 @@ static void check_jacobian(const double u[N_IN], double scale) {
 }
 
 static void check_jerk(const double u[N_IN], const double tddd[3], double scale) {
-    double jf[3], jb[3];
-    ak_angular_jerk_123(&u[0], &u[3], &u[6], tddd, jf, jb);
+    /* d alpha / dt = (d alpha / d theta) td + (d alpha / d td) tdd + (d alpha / d tdd) tddd */
+    double J[AK_GENERAL_N_OUTPUTS][N_IN], jf[3], jb[3];
+    body123_jacobian(u, J);
+    for (int k = 0; k < 3; k++) {
+        jf[k] = jb[k] = 0.0;
+        for (int m = 0; m < 3; m++) {
+            jf[k] += J[6 + k][m] * u[3 + m] + J[6 + k][3 + m] * u[6 + m] + J[6 + k][6 + m] * tddd[m];
+            jb[k] += J[9 + k][m] * u[3 + m] + J[9 + k][3 + m] * u[6 + m] + J[9 + k][6 + m] * tddd[m];
+        }
+    }
     const double h = 1e-3 / scale;
     const double offsets[4] = {-2 * h, -h, h, 2 * h};
     double y[4][N_OUT];
