@@ -3,8 +3,8 @@
  *
  * It loads the built AngularKinematics.so with dlopen, as a master does, and in the same run
  * times
- *   - the bare core, ak_angular_kinematics_123, linked from the same static library (same
- *     compiler, same flags) that the FMU is built from;
+ *   - the bare core, ak_general_angular_kinematics for body123 (the FMU's default sequence),
+ *     linked from the same static library (same compiler, same flags) that the FMU is built from;
  *   - the full cycle of one communication point: fmi2SetReal of the 9 inputs, fmi2DoStep,
  *     fmi2GetReal of the 12 outputs;
  *   - fmi2GetReal of the 12 outputs when no input changed (the FMU must not recompute), in
@@ -34,9 +34,9 @@
 #include <time.h>
 
 #include "fmi2FunctionTypes.h"
-#include "kinematics.h"
+#include "AngularKinematics_variables.h"
+#include "kinematics_general.h"
 
-#define AK_GUID "{c3391885-ba93-4824-bb36-df39703b63ee}"
 
 enum { N_INPUTS = 9, N_OUTPUTS = 12, TABLE_ROWS = 256 };
 
@@ -250,8 +250,8 @@ static double time_core(long n) {
     const double start = now_ns();
     for (long step = 0; step < n; step++) {
         const double *u = input_table[step & (TABLE_ROWS - 1)];
-        ak_angular_kinematics_123(u, u + 3, u + 6, outputs, outputs + 3, outputs + 6,
-                                  outputs + 9);
+        ak_general_angular_kinematics(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], u, u + 3, u + 6, outputs,
+                                      outputs + 3, outputs + 6, outputs + 9);
         sum += outputs[k];
         k = k == N_OUTPUTS - 1 ? 0 : k + 1;
     }
@@ -386,8 +386,8 @@ static void check_fmu(fmu_api *api) {
     for (int row = 0; row < TABLE_ROWS; row++) {
         const double *u = input_table[row];
         double expected[N_OUTPUTS], got[N_OUTPUTS];
-        ak_angular_kinematics_123(u, u + 3, u + 6, expected, expected + 3, expected + 6,
-                                  expected + 9);
+        ak_general_angular_kinematics(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], u, u + 3, u + 6,
+                                      expected, expected + 3, expected + 6, expected + 9);
         check_ok(api->set_real(fmu.component, INPUT_VRS, N_INPUTS, u), "set");
         check_ok(api->do_step(fmu.component, fmu.time, STEP_SIZE, fmi2True), "doStep");
         fmu.time += STEP_SIZE;
@@ -488,7 +488,7 @@ static const char *const INPUT_NAMES[N_INPUTS] = {
 
 static void run_scaling(fmu_api *api, const options *o) {
     printf("Full cycle (fmi2SetReal of 9 inputs, fmi2DoStep, fmi2GetReal of 12 outputs) vs. the\n"
-           "bare core ak_angular_kinematics_123, timed alternately in this run; medians of the\n"
+           "bare core ak_general_angular_kinematics (body123), timed alternately in this run; medians of the\n"
            "repeats, cycle / core is the median of the per-repeat ratios:\n\n");
     printf("| steps per run | repeats | core ns/step | cycle ns/step | cycle / core | "
            "max RSS KiB | FMU allocations per run |\n");

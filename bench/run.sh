@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The benchmark (docs/performance.md). Builds the FMU, the driver and the pass-through FMU in
-# Release in build-bench/, then prints, for this machine:
+# Release in build/, then prints, for this machine:
 #   1. the C driver's figures (bench/bench_fmu.c): set/doStep/get cycle vs. the bare core, gets
 #      without input change, gets after one input change, scaling with the step count;
 #   2. instruction counts per step under callgrind, when valgrind is installed (stable where
@@ -18,7 +18,7 @@
 #   --calls N        iterations of the driver's single-call loops (default 1e6)
 #   --fmpy-steps N   steps per fmpy simulation (default 100000)
 #   --fmpy-repeats R fmpy simulations per FMU (default 5)
-# The whole output is also written to build-bench/last-run.md.
+# The whole output is also written to build/last-run.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -44,17 +44,14 @@ while [ $# -gt 0 ]; do
   shift
 done
 
-bash scripts/setup.sh
-mkdir -p build-bench
-if ! cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DAK_DIST_DIR="$PWD/build-bench/dist" \
-     -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >build-bench/configure.log 2>&1; then
-  cat build-bench/configure.log
-  exit 1
+# The release build (preset release, build/): what dist/ ships.
+if [ -z "${AK_SET_UP:-}" ]; then
+  bash scripts/setup.sh
+  bash scripts/build.sh >/dev/null
 fi
-cmake --build build-bench --parallel 2 >build-bench/build.log 2>&1 || { cat build-bench/build.log; exit 1; }
 
-fmu_so=build-bench/fmu/binaries/linux64/AngularKinematics.so
-driver=build-bench/bench/bench_fmu
+fmu_so=build/fmu/binaries/linux64/AngularKinematics.so
+driver=build/bench/bench_fmu
 
 # The calls in one function of a binary, counted: "sincos@plt x3, ...".
 calls_in() {
@@ -69,8 +66,8 @@ machine() {
   local model cores flags lto
   model=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -1)
   cores=$(nproc)
-  flags=$(sed -n 's/^CMAKE_C_FLAGS_RELEASE:STRING=//p' build-bench/CMakeCache.txt)
-  lto=$(sed -n 's/^AK_LTO:BOOL=//p' build-bench/CMakeCache.txt)
+  flags=$(sed -n 's/^CMAKE_C_FLAGS_RELEASE:STRING=//p' build/CMakeCache.txt)
+  lto=$(sed -n 's/^AK_LTO:BOOL=//p' build/CMakeCache.txt)
   echo "Machine: ${model:-unknown CPU}, ${cores} cores ($(uname -m), $(uname -r))"
   echo "Compiler: $(cc --version | head -1); Release flags: ${flags}, link-time optimization ${lto}"
   echo "Date: $(date -u '+%Y-%m-%d %H:%M UTC'); load average: $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -120,7 +117,7 @@ callgrind_table() {
     callgrind_table
     echo
   fi
-  .venv/bin/python bench/fmpy_bench.py --fmu build-bench/dist/AngularKinematics.fmu \
-    --passthrough build-bench/passthrough/PassThrough.so --steps "$fmpy_steps" \
+  .venv/bin/python bench/fmpy_bench.py --fmu dist/AngularKinematics.fmu \
+    --passthrough build/passthrough/PassThrough.so --steps "$fmpy_steps" \
     --repeats "$fmpy_repeats"
-} | tee build-bench/last-run.md
+} | tee build/last-run.md

@@ -11,40 +11,43 @@ function(ak_add_abuse_tests model rows_source)
     set(_suffix "_${model}")
   endif()
   # The FMU's sources, compiled once more as a static library the test programs link.
-  add_library(ak_fmu_for_tests_${model} STATIC ${AK_MODEL_SOURCES_${model}} ${AK_FMI_SOURCES})
-  target_include_directories(ak_fmu_for_tests_${model} PUBLIC fmu_src "${FMI2_HEADERS_DIR}")
+  add_library(ak_fmu_for_tests_${model} STATIC ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${model}}
+                                              ${AK_FMI2_SOURCES})
+  target_include_directories(ak_fmu_for_tests_${model} PUBLIC ${AK_INCLUDE_DIRS}
+                             fmu_src/models/${model} "${FMI2_HEADERS_DIR}")
   target_compile_options(ak_fmu_for_tests_${model} PRIVATE ${AK_WARNINGS})
   target_link_libraries(ak_fmu_for_tests_${model} PUBLIC kinematics_core)
 
   # The master's side shared by the programs: callbacks, the op table, state helpers, the
   # bad-input table (rows common to both models and the model's own rows).
   add_library(ak_test_master_${model} STATIC
-    fmu_src/test/fmi2_test_callbacks.c
-    fmu_src/test/fmi2_test_ops.c
-    fmu_src/test/fmi2_test_instance.c
-    fmu_src/test/fmi2_bad_input_table.c
-    fmu_src/test/${rows_source})
+    tests/c/fmi2_test_callbacks.c
+    tests/c/fmi2_test_ops.c
+    tests/c/fmi2_test_instance.c
+    tests/c/fmi2_bad_input_table.c
+    tests/c/${rows_source})
   target_compile_options(ak_test_master_${model} PRIVATE ${AK_WARNINGS})
-  target_link_libraries(ak_test_master_${model} PUBLIC ak_fmu_for_tests_${model})
+  target_link_libraries(ak_test_master_${model} PUBLIC ak_fmu_for_tests_${model}
+                                                      kinematics_123_reference)
 
   if(NOT AK_FUZZ)
-    add_executable(test_fmi2_calls${_suffix} fmu_src/test/test_fmi2_calls.c)
+    add_executable(test_fmi2_calls${_suffix} tests/c/test_fmi2_calls.c)
     target_compile_options(test_fmi2_calls${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(test_fmi2_calls${_suffix} PRIVATE ak_test_master_${model})
     add_test(NAME fmi2_calls_${model} COMMAND test_fmi2_calls${_suffix})
 
-    add_executable(test_fmi2_instances${_suffix} fmu_src/test/test_fmi2_instances.c)
+    add_executable(test_fmi2_instances${_suffix} tests/c/test_fmi2_instances.c)
     target_compile_options(test_fmi2_instances${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(test_fmi2_instances${_suffix} PRIVATE ak_test_master_${model}
                                                                 Threads::Threads)
     add_test(NAME fmi2_instances_${model} COMMAND test_fmi2_instances${_suffix} 1000 4 20)
 
-    add_executable(soak_fmi2${_suffix} fmu_src/test/soak_fmi2.c)
+    add_executable(soak_fmi2${_suffix} tests/c/soak_fmi2.c)
     target_compile_options(soak_fmi2${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(soak_fmi2${_suffix} PRIVATE ak_test_master_${model})
     add_test(NAME fmi2_soak_short_${model} COMMAND soak_fmi2${_suffix} 100000)
   else()
-    add_executable(fuzz_fmi2${_suffix} fmu_src/test/fuzz_fmi2.c)
+    add_executable(fuzz_fmi2${_suffix} tests/c/fuzz_fmi2.c)
     target_compile_options(fuzz_fmi2${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(fuzz_fmi2${_suffix} PRIVATE ak_test_master_${model})
     target_link_options(fuzz_fmi2${_suffix} PRIVATE -fsanitize=fuzzer)

@@ -11,8 +11,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=${1:-}
 
-bash scripts/setup.sh
-bash scripts/setup_abuse_tools.sh
+if [ -z "${AK_SET_UP:-}" ]; then
+  bash scripts/setup.sh
+  bash scripts/setup_abuse_tools.sh
+fi
 
 if [ "$quick" = --quick ]; then
   steps=50; soak=200000; valgrind_steps=3; valgrind_soak=20000
@@ -20,16 +22,10 @@ else
   steps=1000; soak=10000000; valgrind_steps=50; valgrind_soak=1000000
 fi
 
-configure_and_build() { # folder, sanitizers, targets...
-  local folder=$1 sanitize=$2
-  shift 2
-  mkdir -p "$folder"
-  if ! CC=gcc cmake -S . -B "$folder" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAK_SANITIZE="$sanitize" \
-      -DPython3_EXECUTABLE="$PWD/.venv/bin/python" -DAK_DIST_DIR="$PWD/$folder/dist" \
-      >"$folder/configure.log" 2>&1; then
-    cat "$folder/configure.log"
-    exit 1
-  fi
+configure_and_build() { # preset, targets...: the preset's folder is build-<preset>
+  local preset=$1 folder=build-$1
+  shift
+  bash scripts/configure.sh "$preset"
   cmake --build "$folder" --parallel 2 --target "$@" >"$folder/build.log" 2>&1 || {
     cat "$folder/build.log"
     exit 1
@@ -51,7 +47,7 @@ programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRat
   test_fmi2_instances_EulerRates soak_fmi2_EulerRates"
 echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
 # shellcheck disable=SC2086
-configure_and_build build-asan address,undefined $programs test_kinematics
+configure_and_build asan $programs test_kinematics
 run asan+ubsan build-asan/test_kinematics
 for suffix in "" _EulerRates; do
   run asan+ubsan "build-asan/test_fmi2_calls$suffix"
@@ -62,17 +58,17 @@ done
 # The instrumented binaries inside a real master: the whole pytest suite through fmpy.
 # Leak detection is off here only because the Python interpreter itself does not free everything
 # at exit; the FMU's leaks are checked by the C programs above and by valgrind below.
-configure_and_build build-asan address,undefined fmu_AngularKinematics fmu_EulerRates model_info_AngularKinematics model_info_EulerRates
+configure_and_build asan fmu_AngularKinematics fmu_EulerRates model_info_AngularKinematics model_info_EulerRates
 # --quick: the tests of the FMI layer only (calls, bad input, FMU state, model exchange,
 # derivatives, EulerRates); the whole suite takes a minute and a half under ASan. Never
-# tests/test_windows_binary.py: it checks the Windows DLL packaged in dist/*.fmu, which the ASan
+# tests/python/test_windows_binary.py: it checks the Windows DLL packaged in dist/*.fmu, which the ASan
 # build does not make.
 if [ "$quick" = --quick ]; then
-  suite="tests/test_fmi_calls.py tests/test_bad_input.py tests/test_fmu_state.py
-    tests/test_model_exchange.py tests/test_directional_derivatives.py tests/test_output_derivatives.py
-    tests/test_input_interpolation.py tests/test_euler_rates.py tests/test_value_runs.py"
+  suite=$(printf 'tests/python/%s ' test_fmi_calls.py test_bad_input.py test_fmu_state.py \
+    test_model_exchange.py test_directional_derivatives.py test_output_derivatives.py \
+    test_input_interpolation.py test_euler_rates.py test_value_runs.py)
 else
-  suite="tests --ignore=tests/test_windows_binary.py"
+  suite="tests/python --ignore=tests/python/test_windows_binary.py"
 fi
 echo "--- asan+ubsan: pytest through fmpy with build-asan/dist/{AngularKinematics,EulerRates}.fmu"
 # shellcheck disable=SC2086
@@ -82,14 +78,14 @@ AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asa
   | tail -1
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"
-configure_and_build build-tsan thread test_fmi2_instances test_fmi2_instances_EulerRates
+configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates
 for suffix in "" _EulerRates; do
   run tsan "build-tsan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run tsan "build-tsan/test_fmi2_instances$suffix" 64 8 "$steps"
 done
 
 echo "=== valgrind memcheck (the normal build, build/)"
-bash scripts/build.sh >/dev/null
+[ -n "${AK_SET_UP:-}" ] || bash scripts/build.sh >/dev/null
 memcheck() { # program, arguments...: valgrind's summary printed, any error or leak fails
   local log
   log="build/memcheck-$(basename "$1").log"

@@ -4,8 +4,10 @@
 #   bash scripts/check_static.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
-bash scripts/setup_abuse_tools.sh
+if [ -z "${AK_SET_UP:-}" ]; then
+  bash scripts/setup.sh
+  bash scripts/setup_abuse_tools.sh
+fi
 headers=$(.venv/bin/python -c "import fmpy, os; print(os.path.join(os.path.dirname(fmpy.__file__), 'c-code'))")
 
 # unusedFunction: the FMI entry points are called by the master, not by anything cppcheck sees.

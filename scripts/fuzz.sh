@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Fuzzes the FMI layer of both FMUs with libFuzzer + ASan + UBSan (fmu_src/test/fuzz_fmi2.c, built
+# Fuzzes the FMI layer of both FMUs with libFuzzer + ASan + UBSan (tests/c/fuzz_fmi2.c, built
 # once per model: build-fuzz/fuzz_fmi2 for AngularKinematics, build-fuzz/fuzz_fmi2_EulerRates),
-# starting from the corpus kept in the repository (fmu_src/test/fuzz_corpus/, one for both models:
+# starting from the corpus kept in the repository (tests/fuzz_corpus/, one for both models:
 # the encoding is the same).
 #
 #   bash scripts/fuzz.sh [seconds [--keep]]     (default 60 seconds per model)
@@ -17,17 +17,13 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 keep=${2:-}
 models=${AK_FUZZ_MODELS:-AngularKinematics EulerRates}
-corpus=fmu_src/test/fuzz_corpus
+corpus=tests/fuzz_corpus
 
-bash scripts/setup.sh
-bash scripts/setup_abuse_tools.sh
-mkdir -p build-fuzz
-if ! CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAK_SANITIZE=fuzzer \
-    -DPython3_EXECUTABLE="$PWD/.venv/bin/python" -DAK_DIST_DIR="$PWD/build-fuzz/dist" \
-    >build-fuzz/configure.log 2>&1; then
-  cat build-fuzz/configure.log
-  exit 1
+if [ -z "${AK_SET_UP:-}" ]; then
+  bash scripts/setup.sh
+  bash scripts/setup_abuse_tools.sh
 fi
+bash scripts/configure.sh fuzz
 cmake --build build-fuzz --parallel 2 --target fuzz_fmi2 fuzz_fmi2_EulerRates \
   >build-fuzz/build.log 2>&1 || {
   cat build-fuzz/build.log
@@ -35,7 +31,7 @@ cmake --build build-fuzz --parallel 2 --target fuzz_fmi2 fuzz_fmi2_EulerRates \
 }
 
 if [ ! -d "$corpus" ] || [ -z "$(ls -A "$corpus")" ]; then
-  .venv/bin/python fmu_src/test/fuzz_seeds.py "$corpus"
+  .venv/bin/python tests/c/fuzz_seeds.py "$corpus"
 fi
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

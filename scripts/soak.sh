@@ -6,7 +6,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 steps=${1:-10000000}
-bash scripts/setup.sh
-bash scripts/build.sh >/dev/null
+if [ -z "${AK_SET_UP:-}" ]; then
+  bash scripts/setup.sh
+  bash scripts/build.sh >/dev/null
+fi
 build/soak_fmi2 "$steps"
 build/soak_fmi2_EulerRates "$steps"

@@ -1,14 +1,32 @@
 #!/usr/bin/env bash
-# The whole test suite: set up, build, run the core's unit tests and the C tests of the FMI layer
-# (ctest), a short smoke run of the benchmark (it asserts no timing, only that it runs, prints its
-# figures and that the FMU does not evaluate when no input changed), the bounded abuse tests
-# (sanitizers, valgrind, static analysis, fuzzing, soak: scripts/test_abuse.sh), then the FMU's
-# tests through fmpy (pytest), last so that its summary closes the output.
+# The whole test suite, what CI runs (.ci/run):
+#   set up once (scripts/setup.sh: toolchains, wine, the abuse-test tools, .venv), build once per
+#   CMake preset, then: the C tests (ctest), a short benchmark run (no timing asserted: it checks
+#   that the FMU evaluates exactly when an input changed), the bounded abuse tests (sanitizers,
+#   valgrind, static analysis, fuzzing, soak: scripts/test_abuse.sh), and the FMUs through fmpy
+#   (pytest), last so that its summary closes the output.
+#
+#   bash scripts/test.sh              everything (CI)
+#   bash scripts/test.sh --quick      the edit loop: build, ctest, pytest without the slow tests
+#   bash scripts/test.sh [--quick] -- PYTEST_ARGS...   e.g. -- -k fmu_state
 set -euo pipefail
 cd "$(dirname "$0")/.."
+quick=
+if [ "${1:-}" = --quick ]; then
+  quick=1
+  shift
+fi
+[ "${1:-}" = -- ] && shift
+
 bash scripts/setup.sh --with-wine
+[ -n "$quick" ] || bash scripts/setup_abuse_tools.sh
+export AK_SET_UP=1 # the scripts below skip their own set-up and build
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure
+if [ -n "$quick" ]; then
+  .venv/bin/python -m pytest -m "not slow" "$@"
+  exit
+fi
 bash bench/run.sh --quick
 bash scripts/test_abuse.sh
-.venv/bin/python -m pytest tests "$@"
+.venv/bin/python -m pytest "$@"

@@ -1,0 +1,131 @@
+"""Reads the model descriptions (fmu_src/models/<Model>/description.py) and expands them into
+scalar variables: what the generator writes from and what the Python tests read."""
+import importlib.util
+import pathlib
+import re
+from dataclasses import dataclass, field
+from itertools import product
+
+from codegen import project
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+MODELS_DIR = ROOT / "fmu_src" / "models"
+
+
+@dataclass
+class Scalar:
+    """One FMI 2 ScalarVariable: an element of an array of the description, or a scalar."""
+    name: str
+    base: str              # the description's variable name: "R" for "R[2,3]"
+    indices: tuple         # 1-based indices within the array; () for a scalar
+    vr: int
+    causality: str         # input, output, parameter
+    type: str              # declared type: Angle, ..., Sequence, Frame
+    fmi_type: str          # Real or Integer (Enumerations are Integers in the C table)
+    group: str             # outputs: main or lazy
+    start: float
+    min: float
+    max: float
+    description: str
+    depends: list = field(default_factory=list)  # value references of inputs
+
+
+@dataclass
+class Model:
+    name: str
+    guid: str
+    description: str
+    model_description: pathlib.Path
+    sources: list          # relative to fmu_src/
+    headers: list
+    capabilities: dict
+    enumerations: dict
+    arrays: list           # the description's entries, as written
+    scalars: list          # expanded, in value-reference order
+
+    @property
+    def folder(self):
+        return MODELS_DIR / self.name
+
+    def scalar(self, name):
+        return next(s for s in self.scalars if s.name == name)
+
+    def by_causality(self, causality):
+        return [s for s in self.scalars if s.causality == causality]
+
+
+def _load_module(path):
+    spec = importlib.util.spec_from_file_location(f"description_{path.parent.name}", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _element_name(base, indices):
+    return f"{base}[{','.join(str(i) for i in indices)}]" if indices else base
+
+
+def load(name):
+    d = _load_module(MODELS_DIR / name / "description.py")
+    enumerations = dict(project.ENUMERATIONS)
+    enumerations.update(getattr(d, "ENUMERATIONS", {}))
+    scalars = []
+    for entry in d.VARIABLES:
+        shape = tuple(entry.get("shape", ()))
+        index_sets = list(product(*(range(1, n + 1) for n in shape))) if shape else [()]
+        for offset, indices in enumerate(index_sets):
+            declared = entry["type"]
+            if declared in enumerations:
+                items = [item for item, _ in enumerations[declared]["items"]]
+                fmi_type = "Integer"
+                start = float(items.index(entry["start"]) + 1)
+                low, high = 1.0, float(len(items))
+            else:
+                fmi_type = "Real"
+                start = float(entry.get("start", 0.0))
+                low, high = float(entry.get("min", 0.0)), float(entry.get("max", 0.0))
+            keys = dict(zip("ij", indices))
+            scalars.append(Scalar(
+                name=_element_name(entry["name"], indices), base=entry["name"], indices=indices,
+                vr=entry["vr"] + offset, causality=entry["causality"], type=declared,
+                fmi_type=fmi_type, group=entry.get("group", "main"), start=start, min=low,
+                max=high, description=entry["description"].format(**keys),
+                depends=entry.get("depends", [])))
+    by_name = {s.name: s for s in scalars}
+    # Dependencies: whole inputs ("theta") or, per element, a function of the indices.
+    for s in scalars:
+        wanted = s.depends(*s.indices) if callable(s.depends) else s.depends
+        vrs = []
+        for input_name in wanted:
+            if input_name in by_name:
+                vrs.append(by_name[input_name].vr)
+            else:
+                vrs += [t.vr for t in scalars if t.base == input_name]
+        assert all(by_name_causality == "input" for by_name_causality in
+                   (t.causality for t in scalars if t.vr in vrs)), f"{s.name}: depends on a non-input"
+        s.depends = sorted(vrs)
+    scalars.sort(key=lambda s: s.vr)
+    _check(name, scalars)
+    folder = f"models/{name}"
+    return Model(
+        name=d.NAME, guid=d.GUID, description=d.DESCRIPTION,
+        model_description=ROOT / d.MODEL_DESCRIPTION,
+        sources=[f"{folder}/{source}" for source in d.SOURCES] + [f"{folder}/{name}_variables.c"],
+        headers=[f"{folder}/{name}_variables.h"],
+        capabilities=d.CAPABILITIES, enumerations=enumerations, arrays=d.VARIABLES,
+        scalars=scalars)
+
+
+def _check(name, scalars):
+    """The rules the FMI layers rely on (models/model.h)."""
+    vrs = [s.vr for s in scalars]
+    assert len(set(vrs)) == len(vrs), f"{name}: a value reference is used twice"
+    inputs = sorted(s.vr for s in scalars if s.causality == "input")
+    assert inputs == list(range(len(inputs))), (
+        f"{name}: the inputs must hold the value references 0 .. n_inputs - 1 (models/model.h)")
+    for s in scalars:
+        assert re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[[0-9,]+\])?", s.name), s.name
+
+
+def all_models():
+    return [load(name) for name in project.MODELS]

@@ -1,0 +1,76 @@
+"""Facts of the whole project, written once: the version, the log categories, the rotation
+sequences, the declared types and the source files of the core and the FMI layer. Each model adds
+its own description (fmu_src/models/<Model>/description.py); codegen/generate.py writes every file
+that repeats these facts (docs/architecture.md lists them)."""
+
+VERSION = "0.3.0"
+AUTHOR = "AngularKinematics developers"
+
+# name, description: the order is the order of the C enum ak_log_category and of <LogCategories>.
+LOG_CATEGORIES = [
+    ("logStatusError",
+     "Every call that returns fmi2Error, with the function, the variable and the value"),
+    ("logStatusWarning", "Calls that return fmi2Warning or fmi2Discard"),
+    ("logCalls", "Trace of every FMI call with its arguments, and of every evaluation of the model"),
+]
+
+# The 24 rotation sequences in the order of the `sequence` Enumeration (item value = index + 1):
+# the six Tait-Bryan orders, then the six proper Euler orders, body-fixed first, then the same
+# twelve space-fixed. The name gives kind and axes; the note is the rest of the description.
+TAIT_BRYAN = ("123", "132", "213", "231", "312", "321")
+PROPER_EULER = ("121", "131", "212", "232", "313", "323")
+_NOTES = {
+    "body123": "Tait-Bryan, Cardan x-y'-z''", "body321": "Tait-Bryan, yaw-pitch-roll",
+    "body313": "proper Euler, z-x'-z''", "body323": "proper Euler, z-y'-z''",
+    "space123": "Tait-Bryan, x-y-z",
+}
+SEQUENCES = [kind + order for kind in ("body", "space") for order in TAIT_BRYAN + PROPER_EULER]
+DEFAULT_SEQUENCE = "body123"
+
+
+def sequence_axes(name):
+    """(1, 2, 3) for body123: the axes of theta[1], theta[2], theta[3]."""
+    return tuple(int(c) for c in name[-3:])
+
+
+def sequence_is_proper_euler(name):
+    return name[-3:] in PROPER_EULER
+
+
+def sequence_description(name):
+    kind = "body-fixed" if name.startswith("body") else "space-fixed"
+    order = "-".join(name[-3:])
+    family = "proper Euler" if sequence_is_proper_euler(name) else "Tait-Bryan"
+    return f"{kind} {order} ({_NOTES.get(name, family)})"
+
+
+# Declared types (<SimpleType> of every modelDescription.xml): quantity, unit, display unit.
+TYPES = {
+    "Angle": ("Angle", "rad", "deg"),
+    "AngularVelocity": ("AngularVelocity", "rad/s", "deg/s"),
+    "AngularAcceleration": ("AngularAcceleration", "rad/s2", "deg/s2"),
+    "Dimensionless": (None, "", None),
+    "Frequency": ("Frequency", "1/s", None),
+}
+# Enumerations every model may use; a model's description can add its own.
+ENUMERATIONS = {
+    "Sequence": dict(
+        description="rotation sequence: body-fixed (intrinsic) or space-fixed (extrinsic), axes "
+                    "in the order of theta[1], theta[2], theta[3]",
+        items=[(name, sequence_description(name)) for name in SEQUENCES]),
+}
+
+# Sources, relative to fmu_src/, in the order they are compiled and listed in <SourceFiles>.
+CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c",
+                "core/kinematics_general_jacobian.c"]
+CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h",
+                "core/kinematics_general_jacobian.h"]
+MODEL_SOURCES = ["models/model_log.c"]  # beside every model
+FMI2_SOURCES = ["fmi2/fmi2_instance.c", "fmi2/fmi2_logging.c", "fmi2/fmi2_state_machine.c",
+                "fmi2/fmi2_lifecycle.c", "fmi2/fmi2_values.c", "fmi2/fmi2_cosimulation.c",
+                "fmi2/fmi2_model_exchange.c", "fmi2/fmi2_derivatives.c", "fmi2/fmi2_fmu_state.c"]
+FMI2_HEADERS = ["fmi2/fmi2_instance.h", "fmi2/fmi2_logging.h", "fmi2/fmi2_state_machine.h",
+                "fmi2/fmi2_derivatives.h", "models/model.h", "models/log_categories.h"]
+
+# The models, each a folder fmu_src/models/<name>/ with description.py.
+MODELS = ["AngularKinematics", "EulerRates"]

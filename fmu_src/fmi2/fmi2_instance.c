@@ -1,0 +1,86 @@
+/* Instance initial condition and the lazy evaluation of the outputs. */
+#include "fmi2_instance.h"
+
+#include "fmi2_logging.h"
+
+/* The model's messages go out through the instance's logger, with the FMI 2 status. */
+static void log_for_model(void *owner, ak_log_category category, ak_status status,
+                          const char *message) {
+    static const fmi2Status STATUS[] = {fmi2OK, fmi2Warning, fmi2Discard, fmi2Error};
+    ak_log((const ak_instance *)owner, category, STATUS[status], "%s", message);
+}
+
+void ak_instance_reset(ak_instance *instance) {
+    for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
+        /* Errors and warnings are reported unless switched off; the call trace only on request. */
+        instance->log_enabled[category] =
+            category != AK_LOG_CALLS || instance->logging_on_at_instantiation;
+    }
+    instance->data.log = log_for_model;
+    instance->data.owner = instance;
+    instance->state = AK_STATE_INSTANTIATED;
+    instance->time = 0.0;
+    instance->stop_time_defined = false;
+    instance->stop_time = 0.0;
+    for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
+        const ak_variable *variable = ak_variable_of((unsigned int)vr);
+        instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
+    }
+    ak_instance_inputs_changed(instance);
+    instance->lazy_stale = true;
+    instance->evaluation_status = AK_EVAL_OK;
+    ak_instance_clear_input_derivatives(instance);
+    instance->evaluations = 0;
+}
+
+void ak_instance_clear_input_derivatives(ak_instance *instance) {
+    for (int k = 0; k < AK_MAX_INPUTS; k++) {
+        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+            instance->data.input_derivatives[k][n] = 0.0;
+        }
+    }
+    instance->data.any_input_derivative = false;
+}
+
+ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
+    if (!instance->outputs_stale) {
+        return instance->evaluation_status;
+    }
+    instance->evaluation_status = AK_MODEL.evaluate(&instance->data);
+    instance->outputs_stale = false;
+    instance->lazy_stale = true;
+    instance->evaluations++;
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu)",
+               instance->evaluations);
+    }
+    return instance->evaluation_status;
+}
+
+ak_eval_status ak_instance_update_all_outputs(ak_instance *instance) {
+    const ak_eval_status status = ak_instance_update_outputs(instance);
+    if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
+        AK_MODEL.evaluate_lazy(&instance->data);
+        instance->lazy_stale = false;
+        if (ak_log_on(instance, AK_LOG_CALLS)) {
+            ak_log(instance, AK_LOG_CALLS, fmi2OK, "lazy outputs evaluated");
+        }
+    }
+    return status;
+}
+
+fmi2Status ak_instance_read_status(const ak_instance *instance, ak_eval_status status) {
+    switch (status) {
+    case AK_EVAL_OK:
+        return fmi2OK;
+    case AK_EVAL_WARNING:
+        return fmi2Warning;
+    case AK_EVAL_FAILED:
+    default:
+        /* FMI 2.0.4, 2.1.3: fmi2Discard is the model-exchange answer to "a function is outside
+         * of its domain", and for co-simulation the master "has to decide if the simulation run
+         * can be continued"; fmi2Error would make the instance unusable, which it is not. */
+        (void)instance;
+        return fmi2Discard;
+    }
+}

@@ -1,0 +1,84 @@
+/* One FMU instance: everything an instance owns lives here, nothing in globals, so any
+ * number of instances can live side by side. */
+#ifndef ANGULAR_KINEMATICS_FMI2_INSTANCE_H
+#define ANGULAR_KINEMATICS_FMI2_INSTANCE_H
+
+#include <stdbool.h>
+
+#include "fmi2Functions.h"
+#include "model.h"
+
+/* The FMI 2.0 co-simulation and model-exchange states, one bit each so that a set of them is a
+ * mask. Instantiated, InitializationMode and Terminated are common to both interfaces; the
+ * Step* states are co-simulation's, EventMode and ContinuousTimeMode model exchange's.
+ * StepInProgress and StepCanceled belong to asynchronous stepping, which this FMU does not
+ * offer; they appear in the masks to keep the table the standard's. */
+typedef enum {
+    AK_STATE_INSTANTIATED = 1 << 0,
+    AK_STATE_INITIALIZATION_MODE = 1 << 1,
+    AK_STATE_STEP_COMPLETE = 1 << 2,
+    AK_STATE_STEP_IN_PROGRESS = 1 << 3,
+    AK_STATE_STEP_FAILED = 1 << 4,
+    AK_STATE_STEP_CANCELED = 1 << 5,
+    AK_STATE_TERMINATED = 1 << 6,
+    AK_STATE_EVENT_MODE = 1 << 7,
+    AK_STATE_CONTINUOUS_TIME_MODE = 1 << 8
+} ak_state;
+
+typedef struct ak_instance_s {
+    fmi2CallbackFunctions functions; /* a copy: the master's struct need not outlive the call */
+    char *instance_name;
+    bool logging_on_at_instantiation;
+    bool log_enabled[AK_N_LOG_CATEGORIES];
+
+    fmi2Type fmu_type; /* which interface the instance was created for */
+    ak_state state;
+    double time;
+    bool stop_time_defined;
+    double stop_time;
+
+    /* Values by value reference, input derivatives and the logger, as the model sees them. */
+    ak_model_data data;
+    /* True when an input or parameter changed since the main output group was last computed;
+     * lazy_stale: when the main group was computed since the lazy group was, which is computed
+     * only when one of its values is read. */
+    bool outputs_stale;
+    bool lazy_stale;
+    /* Status of the last evaluation of the main group: on AK_EVAL_FAILED the outputs hold the
+     * values of the last successful one, and reading them returns fmi2Discard
+     * until an input changes. */
+    ak_eval_status evaluation_status;
+    /* How many times the core ran; reported in the logCalls trace. */
+    unsigned long evaluations;
+    /* FMU states made by this instance and not yet freed (fmi2_fmu_state.c). */
+    struct ak_fmu_state_s *live_states;
+} ak_instance;
+
+/* Frees the FMU states the master did not free (fmi2FreeInstance). */
+void ak_free_all_fmu_states(ak_instance *instance);
+
+/* Puts the instance in its just-instantiated condition (used by fmi2Instantiate and fmi2Reset). */
+void ak_instance_reset(ak_instance *instance);
+
+/* Forgets every input derivative (the inputs are then held constant over a step). */
+void ak_instance_clear_input_derivatives(ak_instance *instance);
+
+/* Brings the main output group up to date with the inputs, running the model only if an input
+ * or parameter changed; returns the status of the evaluation the outputs come from. */
+ak_eval_status ak_instance_update_outputs(ak_instance *instance);
+
+/* The same, and the lazy output group too. */
+ak_eval_status ak_instance_update_all_outputs(ak_instance *instance);
+
+/* The FMI status a read of outputs returns after an evaluation with that result: fmi2OK,
+ * fmi2Warning, or fmi2Discard when it failed (both interfaces; see fmi2_instance.c). */
+fmi2Status ak_instance_read_status(const ak_instance *instance, ak_eval_status status);
+
+/* Marks every output stale (an input or parameter changed): the main group directly, the lazy
+ * group through it (every evaluation of the main group makes the lazy group stale), so that a
+ * setter pays one store. */
+static inline void ak_instance_inputs_changed(ak_instance *instance) {
+    instance->outputs_stale = true;
+}
+
+#endif

@@ -1,0 +1,121 @@
+/* The AngularKinematics model: angles of any of the 24 rotation sequences and their first and
+ * second derivatives in; omega and alpha in both sets of components out (main group), and R, q,
+ * W_fixed, W_body and their time derivatives (lazy group, computed only when read). */
+#include "AngularKinematics_variables.h"
+
+#include <math.h>
+
+#include "kinematics_general.h"
+#include "kinematics_general_jacobian.h"
+
+_Static_assert(AK_N_VALUE_REFERENCES <= AK_MAX_VARIABLES, "the value array holds them");
+_Static_assert((int)AK_GENERAL_N_OUTPUTS == (int)AK_N_OUTPUTS, "a Jacobian row per output");
+
+static const ak_sequence *sequence_of(const ak_model_data *data) {
+    return &AK_SEQUENCES[(int)data->values[AK_VR_SEQUENCE] - 1];
+}
+
+static ak_eval_status evaluate(ak_model_data *data) {
+    double *v = data->values;
+    ak_general_angular_kinematics(sequence_of(data), &v[AK_VR_THETA], &v[AK_VR_THETA_DOT],
+                                  &v[AK_VR_THETA_DDOT], &v[AK_VR_OMEGA_FIXED],
+                                  &v[AK_VR_OMEGA_BODY], &v[AK_VR_ALPHA_FIXED],
+                                  &v[AK_VR_ALPHA_BODY]);
+    return AK_EVAL_OK;
+}
+
+static void store_matrix(double *out, double M[3][3]) {
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            out[3 * i + j] = M[i][j];
+        }
+    }
+}
+
+static void evaluate_lazy(ak_model_data *data) {
+    double *v = data->values;
+    const ak_sequence *sequence = sequence_of(data);
+    double R[3][3], W_fixed[3][3], W_body[3][3], W_fixed_dot[3][3], W_body_dot[3][3];
+    ak_general_rotation_matrix(sequence, &v[AK_VR_THETA], R);
+    ak_general_quaternion(sequence, &v[AK_VR_THETA], &v[AK_VR_Q]);
+    ak_general_partials(sequence, &v[AK_VR_THETA], &v[AK_VR_THETA_DOT], W_fixed, W_body,
+                        W_fixed_dot, W_body_dot);
+    store_matrix(&v[AK_VR_R], R);
+    store_matrix(&v[AK_VR_W_FIXED], W_fixed);
+    store_matrix(&v[AK_VR_W_BODY], W_body);
+    store_matrix(&v[AK_VR_W_FIXED_DOT], W_fixed_dot);
+    store_matrix(&v[AK_VR_W_BODY_DOT], W_body_dot);
+}
+
+static const char *check_parameter(const ak_variable *variable, double value) {
+    (void)variable; /* the only parameter is sequence */
+    if (!(value >= 1.0 && value <= AK_SEQUENCE_COUNT)) {
+        return "is not an item of the Enumeration Sequence (1 body123 .. 24 space323)";
+    }
+    return NULL;
+}
+
+static void jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,
+                     double J[][AK_MAX_INPUTS]) {
+    const double *v = data->values;
+    double full[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS];
+    ak_general_jacobian(sequence_of(data), &v[AK_VR_THETA], &v[AK_VR_THETA_DOT],
+                        &v[AK_VR_THETA_DDOT], full);
+    for (size_t i = 0; i < n_out; i++) {
+        for (int k = 0; k < AK_N_INPUTS; k++) {
+            J[i][k] = full[out[i] - AK_N_INPUTS][k];
+        }
+    }
+}
+
+/* d y / dt = J (theta_dot, theta_ddot, theta_dddot) for every output: theta_dot and theta_ddot
+ * are inputs, theta_dddot the first derivative of theta_ddot given by the master (zero when not
+ * given). d omega / dt is alpha exactly; it comes out of the same sum. */
+static void output_derivatives(ak_model_data *data, const unsigned int vr[], size_t nvr,
+                               double value[]) {
+    const double *v = data->values;
+    double full[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS];
+    ak_general_jacobian(sequence_of(data), &v[AK_VR_THETA], &v[AK_VR_THETA_DOT],
+                        &v[AK_VR_THETA_DDOT], full);
+    double rates[AK_N_INPUTS];
+    for (int k = 0; k < 3; k++) {
+        rates[k] = v[AK_VR_THETA_DOT + k];
+        rates[3 + k] = v[AK_VR_THETA_DDOT + k];
+        rates[6 + k] = data->input_derivatives[AK_VR_THETA_DDOT + k][0];
+    }
+    const bool jerk_assumed = rates[6] == 0.0 && rates[7] == 0.0 && rates[8] == 0.0;
+    for (size_t i = 0; i < nvr; i++) {
+        const unsigned int r = vr[i];
+        if (r < AK_VR_ALPHA_FIXED) {
+            /* d omega / dt = alpha, component by component in either frame: the output itself. */
+            value[i] = v[r + (AK_VR_ALPHA_FIXED - AK_VR_OMEGA_FIXED)];
+            continue;
+        }
+        double sum = 0.0;
+        for (int k = 0; k < AK_N_INPUTS; k++) {
+            sum += full[r - AK_N_INPUTS][k] * rates[k];
+        }
+        value[i] = sum;
+        if (jerk_assumed && r < AK_VR_R) {
+            ak_model_log(data, AK_LOG_CALLS, AK_STATUS_OK,
+                   "fmi2GetRealOutputDerivatives: d(%s)/dt uses theta_dddot = 0 (no nonzero "
+                   "derivative of theta_ddot was given)",
+                   AK_VARIABLES[r].name);
+        }
+    }
+}
+
+const ak_model AK_MODEL = {
+    .model_identifier = "AngularKinematics",
+    .guid = AK_GUID,
+    .variables = AK_VARIABLES,
+    .n_value_references = AK_N_VALUE_REFERENCES,
+    .n_inputs = AK_N_INPUTS,
+    .evaluate = evaluate,
+    .evaluate_lazy = evaluate_lazy,
+    .check_parameter = check_parameter,
+    .jacobian = jacobian,
+    .output_derivatives = output_derivatives,
+    .can_interpolate_inputs = true,
+    .evaluate_in_step = false, /* the evaluation never fails: it waits for a read */
+};

@@ -1,0 +1,127 @@
+/* The model descriptor: all that an FMI layer (fmi2/, later fmi3/) knows of a model, and all that
+ * a model knows of an instance. Each FMU binary is compiled with exactly one model folder, whose
+ * model.c defines AK_MODEL; its variable table is generated from its description.py
+ * (codegen/generate.py).
+ *
+ * Values live in one array indexed by value reference. Value references are the description's
+ * and never move; the rules the layers rely on (checked by the generator):
+ *   - the inputs hold value references 0 .. n_inputs - 1 (all Real);
+ *   - every other value reference is an output (group main or lazy) or a parameter (variability
+ *     fixed, Real or Integer), in any order; a value reference no variable has is a hole of the
+ *     table (name NULL).
+ * Integer values are kept as doubles in the same array (every int is exact in a double). */
+#ifndef ANGULAR_KINEMATICS_MODEL_H
+#define ANGULAR_KINEMATICS_MODEL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "log_categories.h"
+
+/* Upper bounds over all models, for the arrays of an instance. */
+#define AK_MAX_VARIABLES 80
+#define AK_MAX_INPUTS 9
+#define AK_MAX_DEPENDENCIES 9
+
+/* Highest order of input derivative a master may give: the inputs follow a polynomial of this
+ * degree over a communication step. */
+#define AK_MAX_INPUT_DERIVATIVE_ORDER 2
+
+typedef enum { AK_CAUSALITY_INPUT, AK_CAUSALITY_OUTPUT, AK_CAUSALITY_PARAMETER } ak_causality;
+typedef enum { AK_TYPE_REAL, AK_TYPE_INTEGER } ak_type;
+/* Outputs of the main group are computed by evaluate whenever an input changed and an output is
+ * read; those of the lazy group by evaluate_lazy, only when one of them is read. */
+typedef enum { AK_GROUP_MAIN, AK_GROUP_LAZY } ak_group;
+
+typedef struct {
+    unsigned int value_reference;
+    const char *name; /* NULL: no variable has this value reference */
+    ak_causality causality;
+    ak_type type;
+    ak_group group;            /* outputs only */
+    const char *declared_type; /* a <SimpleType> of modelDescription.xml */
+    const char *unit;          /* "" when none */
+    double start;              /* inputs and parameters */
+    double min, max;           /* parameters: the values a setter accepts */
+    const char *description;
+    size_t n_dependencies; /* outputs only: the inputs it structurally depends on */
+    unsigned int dependencies[AK_MAX_DEPENDENCIES];
+} ak_variable;
+
+/* The status a model reports with a message; each FMI layer maps it to its own status type. */
+typedef enum { AK_STATUS_OK, AK_STATUS_WARNING, AK_STATUS_DISCARD, AK_STATUS_ERROR } ak_status;
+
+/* What a model sees of an instance, whichever FMI layer owns it. */
+typedef struct {
+    double values[AK_MAX_VARIABLES]; /* indexed by value reference */
+    /* input_derivatives[k][n - 1]: the n-th time derivative of input k at the current time, as
+     * the master gave it; zero when not given. any_input_derivative is false when all are zero. */
+    double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
+    bool any_input_derivative;
+    /* The owning layer's logger: the message is fully formatted. */
+    void (*log)(void *owner, ak_log_category category, ak_status status, const char *message);
+    void *owner;
+} ak_model_data;
+
+/* Result of an evaluation. AK_EVAL_WARNING: outputs written and valid, the model logged why it
+ * warns. AK_EVAL_FAILED: nothing written, the model logged why; the outputs keep their last
+ * valid values. */
+typedef enum { AK_EVAL_OK = 0, AK_EVAL_WARNING = 1, AK_EVAL_FAILED = 2 } ak_eval_status;
+
+typedef struct {
+    const char *model_identifier;
+    const char *guid;
+    const ak_variable *variables; /* indexed by value reference */
+    int n_value_references;       /* highest value reference + 1 */
+    int n_inputs;
+
+    /* Computes the main output group from the inputs and parameters in data->values. */
+    ak_eval_status (*evaluate)(ak_model_data *data);
+    /* Computes the lazy output group; NULL when there is none. Called only after evaluate
+     * succeeded for the same inputs. */
+    void (*evaluate_lazy)(ak_model_data *data);
+    /* NULL when the value is acceptable for the parameter, else why not (for the message). */
+    const char *(*check_parameter)(const ak_variable *variable, double value);
+
+    /* Optional capabilities: NULL when the model does not have them (the FMI function then
+     * refuses with a message naming the modelDescription.xml flag). */
+    /* Exact d output / d input for the listed outputs (value references) and all inputs:
+     * J[i][k] = d y(out[i]) / d u_k. */
+    void (*jacobian)(const ak_model_data *data, const unsigned int out[], size_t n_out,
+                     double J[][AK_MAX_INPUTS]);
+    /* First time derivatives of the listed outputs (checked value references of outputs), given
+     * the inputs and their derivatives data->input_derivatives. */
+    void (*output_derivatives)(ak_model_data *data, const unsigned int vr[], size_t nvr,
+                               double value[]);
+    bool can_interpolate_inputs;
+    /* True for a model whose evaluation can fail: fmi2DoStep then evaluates at the end of the
+     * step and returns fmi2Discard (StepFailed) when it fails. */
+    bool evaluate_in_step;
+} ak_model;
+
+/* The model this binary is built for (one model folder per FMU target). */
+extern const ak_model AK_MODEL;
+
+/* Formats a message and hands it to the owner's logger (models/model_log.c). */
+void ak_model_log(const ak_model_data *data, ak_log_category category, ak_status status,
+                  const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* The variable of a value reference, or NULL when the model has none. */
+static inline const ak_variable *ak_variable_of(unsigned int vr) {
+    if (vr >= (unsigned int)AK_MODEL.n_value_references || AK_MODEL.variables[vr].name == NULL) {
+        return NULL;
+    }
+    return &AK_MODEL.variables[vr];
+}
+
+static inline const char *ak_causality_name(ak_causality causality) {
+    return causality == AK_CAUSALITY_INPUT    ? "input"
+           : causality == AK_CAUSALITY_OUTPUT ? "output"
+                                              : "parameter";
+}
+
+#endif

@@ -1,0 +1,198 @@
+/* See fmi2_test_instance.h. */
+#include "fmi2_test_instance.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "kinematics_123.h"
+
+const fmi2Real AK_TEST_INPUTS[AK_TEST_N_INPUTS] = {0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8};
+
+const unsigned int AK_TEST_STATES[] = {
+    AK_IN_INSTANTIATED,           AK_IN_INITIALIZATION_MODE,
+    AK_IN_STEP_COMPLETE,          AK_IN_STEP_FAILED,
+    AK_IN_TERMINATED,             AK_ME | AK_IN_INSTANTIATED,
+    AK_ME | AK_IN_INITIALIZATION_MODE, AK_ME | AK_IN_EVENT_MODE,
+    AK_ME | AK_IN_CONTINUOUS_TIME_MODE, AK_ME | AK_IN_TERMINATED};
+const int AK_TEST_N_STATES = (int)(sizeof AK_TEST_STATES / sizeof AK_TEST_STATES[0]);
+
+bool ak_test_state_reachable(unsigned int state) {
+    return state != AK_IN_STEP_FAILED || AK_MODEL.evaluate_in_step;
+}
+
+fmi2Component ak_test_instantiate_for(unsigned int state, const char *name,
+                                      const fmi2CallbackFunctions *functions, bool logging_on) {
+    return fmi2Instantiate(name, (state & AK_ME) ? fmi2ModelExchange : fmi2CoSimulation,
+                           AK_MODEL.guid, "file:///unused", functions, fmi2False,
+                           logging_on ? fmi2True : fmi2False);
+}
+
+fmi2Component ak_test_instantiate(const char *name, const fmi2CallbackFunctions *functions,
+                                  bool logging_on) {
+    return ak_test_instantiate_for(AK_IN_INSTANTIATED, name, functions, logging_on);
+}
+
+static const fmi2ValueReference INPUT_VRS[AK_TEST_N_INPUTS] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+
+bool ak_test_bring_to(fmi2Component c, unsigned int state) {
+    const unsigned int s = state & ~(unsigned int)AK_ME;
+    if (s == AK_IN_INSTANTIATED) {
+        return true;
+    }
+    if (fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2True, AK_TEST_STOP_TIME) != fmi2OK ||
+        fmi2EnterInitializationMode(c) != fmi2OK ||
+        fmi2SetReal(c, INPUT_VRS, AK_TEST_N_INPUTS, AK_TEST_INPUTS) != fmi2OK) {
+        return false;
+    }
+    if (s == AK_IN_INITIALIZATION_MODE) {
+        return true;
+    }
+    if (fmi2ExitInitializationMode(c) != fmi2OK) {
+        return false;
+    }
+    if (state & AK_ME) { /* now in EventMode */
+        if (s == AK_IN_EVENT_MODE) {
+            return true;
+        }
+        if (s == AK_IN_CONTINUOUS_TIME_MODE) {
+            return fmi2EnterContinuousTimeMode(c) == fmi2OK;
+        }
+        return s == AK_IN_TERMINATED && fmi2Terminate(c) == fmi2OK;
+    }
+    if (fmi2DoStep(c, 0.0, AK_TEST_STEP_COMPLETE_TIME, fmi2True) != fmi2OK) {
+        return false;
+    }
+    if (s == AK_IN_STEP_COMPLETE) {
+        return true;
+    }
+    if (s == AK_IN_STEP_FAILED) {
+        const fmi2ValueReference theta2 = 1;
+        const fmi2Real singular = AK_TEST_SINGULAR_THETA2;
+        return fmi2SetReal(c, &theta2, 1, &singular) == fmi2OK &&
+               fmi2DoStep(c, AK_TEST_STEP_COMPLETE_TIME, 0.5, fmi2True) == fmi2Discard;
+    }
+    return s == AK_IN_TERMINATED && fmi2Terminate(c) == fmi2OK;
+}
+
+void ak_snapshot_take(ak_snapshot *snapshot, fmi2Component c) {
+    memcpy(&snapshot->copy, c, sizeof snapshot->copy);
+}
+
+bool ak_snapshot_unchanged(const ak_snapshot *snapshot, fmi2Component c) {
+    return memcmp(&snapshot->copy, c, sizeof snapshot->copy) == 0;
+}
+
+bool ak_snapshot_same_inputs(const ak_snapshot *snapshot, fmi2Component c) {
+    const ak_instance *was = &snapshot->copy, *now = c;
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        const ak_variable *variable = ak_variable_of((unsigned int)vr);
+        if (variable != NULL && variable->causality != AK_CAUSALITY_OUTPUT &&
+            memcmp(&was->data.values[vr], &now->data.values[vr], sizeof was->data.values[vr])) {
+            return false;
+        }
+    }
+    return memcmp(was->data.input_derivatives, now->data.input_derivatives,
+                  sizeof was->data.input_derivatives) == 0 &&
+           memcmp(&was->time, &now->time, sizeof was->time) == 0;
+}
+
+bool ak_test_outputs_consistent(fmi2Component c) {
+    const ak_instance *instance = c;
+    /* The expected values: a fresh evaluation on a copy (logging off: the FMU's own read logs
+     * whatever the model has to say). */
+    ak_instance fresh = *instance;
+    for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
+        fresh.log_enabled[category] = false;
+    }
+    ak_eval_status expected_status = fresh.evaluation_status;
+    if (fresh.outputs_stale) {
+        expected_status = AK_MODEL.evaluate(&fresh.data);
+    }
+    if (expected_status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy != NULL) {
+        AK_MODEL.evaluate_lazy(&fresh.data);
+    }
+    fmi2ValueReference all[AK_MAX_VARIABLES];
+    size_t n = 0;
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        const ak_variable *variable = ak_variable_of((unsigned int)vr);
+        if (variable != NULL && variable->type == AK_TYPE_REAL) {
+            all[n++] = (fmi2ValueReference)vr;
+        }
+    }
+    double got[AK_MAX_VARIABLES];
+    const fmi2Status status = fmi2GetReal(c, all, n, got);
+    const fmi2Status expected = expected_status == AK_EVAL_OK        ? fmi2OK
+                                : expected_status == AK_EVAL_WARNING ? fmi2Warning
+                                                                     : fmi2Discard;
+    if (status != expected) {
+        return false;
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (memcmp(&got[i], &fresh.data.values[all[i]], sizeof got[i]) != 0) {
+            return false;
+        }
+    }
+    if (strcmp(AK_MODEL.model_identifier, "AngularKinematics") == 0 &&
+        instance->data.values[ak_test_vr("sequence")] == 1.0) {
+        double e[21];
+        memcpy(e, got, 9 * sizeof e[0]);
+        ak_angular_kinematics_123(&e[0], &e[3], &e[6], &e[9], &e[12], &e[15], &e[18]);
+        return memcmp(e, got, sizeof e) == 0;
+    }
+    return true;
+}
+
+const char *ak_test_state_name(unsigned int state) {
+    switch (state & ~(unsigned int)AK_ME) {
+    case AK_IN_INSTANTIATED: return "Instantiated";
+    case AK_IN_INITIALIZATION_MODE: return "InitializationMode";
+    case AK_IN_STEP_COMPLETE: return "StepComplete";
+    case AK_IN_STEP_IN_PROGRESS: return "StepInProgress";
+    case AK_IN_STEP_FAILED: return "StepFailed";
+    case AK_IN_STEP_CANCELED: return "StepCanceled";
+    case AK_IN_TERMINATED: return "Terminated";
+    case AK_IN_EVENT_MODE: return "EventMode";
+    case AK_IN_CONTINUOUS_TIME_MODE: return "ContinuousTimeMode";
+    }
+    return "(no instance)";
+}
+
+const char *ak_test_state_label(unsigned int state) {
+    static const char *const me_labels[] = {"Instantiated (ME)", "InitializationMode (ME)",
+                                            "EventMode", "ContinuousTimeMode", "Terminated (ME)"};
+    if (!(state & AK_ME)) {
+        return ak_test_state_name(state);
+    }
+    switch (state & ~(unsigned int)AK_ME) {
+    case AK_IN_INSTANTIATED: return me_labels[0];
+    case AK_IN_INITIALIZATION_MODE: return me_labels[1];
+    case AK_IN_EVENT_MODE: return me_labels[2];
+    case AK_IN_CONTINUOUS_TIME_MODE: return me_labels[3];
+    case AK_IN_TERMINATED: return me_labels[4];
+    }
+    return "(no instance)";
+}
+
+size_t ak_test_main_outputs(fmi2ValueReference out[AK_MAX_VARIABLES]) {
+    size_t n = 0;
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        const ak_variable *variable = ak_variable_of((unsigned int)vr);
+        if (variable != NULL && variable->causality == AK_CAUSALITY_OUTPUT &&
+            variable->group == AK_GROUP_MAIN) {
+            out[n++] = (fmi2ValueReference)vr;
+        }
+    }
+    return n;
+}
+
+fmi2ValueReference ak_test_vr(const char *name) {
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        const ak_variable *variable = ak_variable_of((unsigned int)vr);
+        if (variable != NULL && strcmp(variable->name, name) == 0) {
+            return (fmi2ValueReference)vr;
+        }
+    }
+    fprintf(stderr, "%s has no variable %s\n", AK_MODEL.model_identifier, name);
+    exit(1);
+}

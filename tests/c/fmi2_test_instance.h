@@ -1,0 +1,76 @@
+/* Helpers shared by the C tests of the FMI layer: create an instance, bring it to a state of the
+ * standard's state machine, and tell whether a call left it untouched. They link the FMU's
+ * sources, so they can look inside the instance. */
+#ifndef ANGULAR_KINEMATICS_FMI2_TEST_INSTANCE_H
+#define ANGULAR_KINEMATICS_FMI2_TEST_INSTANCE_H
+
+#include <stdbool.h>
+
+#include "fmi2Functions.h"
+#include "fmi2_instance.h"
+#include "fmi2_test_ops.h"
+
+/* The inputs every test instance is initialized with: value references 0 to 8, the Real inputs
+ * of both models (AngularKinematics: theta, theta_dot, theta_ddot; EulerRates: theta, omega,
+ * omega_dot), far from EulerRates' singular theta[2]. */
+enum { AK_TEST_N_INPUTS = 9 };
+extern const fmi2Real AK_TEST_INPUTS[AK_TEST_N_INPUTS];
+/* theta[2] (value reference 1) at EulerRates' singularity for its default sequence body123. */
+#define AK_TEST_SINGULAR_THETA2 1.5707963267948966
+/* Set up with startTime 0 and stopTime 10; StepComplete is reached by one step from 0 to 1. */
+#define AK_TEST_STOP_TIME 10.0
+#define AK_TEST_STEP_COMPLETE_TIME 1.0
+
+/* A co-simulation instance of the model the program is built with (AK_MODEL), or a
+ * model-exchange one when `state` has AK_ME (ak_test_instantiate_for). */
+fmi2Component ak_test_instantiate(const char *name, const fmi2CallbackFunctions *functions,
+                                  bool logging_on);
+fmi2Component ak_test_instantiate_for(unsigned int state, const char *name,
+                                      const fmi2CallbackFunctions *functions, bool logging_on);
+
+/* From Instantiated to `state` by legal calls; false if any of them fails. Co-simulation:
+ * AK_IN_INSTANTIATED, _INITIALIZATION_MODE, _STEP_COMPLETE (a step from 0 to 1), _STEP_FAILED
+ * (then a step with theta[2] at the singularity: models that can fail a step only),
+ * _TERMINATED. Model exchange (state | AK_ME): AK_IN_INSTANTIATED, _INITIALIZATION_MODE,
+ * _EVENT_MODE, _CONTINUOUS_TIME_MODE, _TERMINATED. */
+bool ak_test_bring_to(fmi2Component c, unsigned int state);
+
+/* The states a test instance can be brought to, each with AK_ME for model exchange. */
+extern const unsigned int AK_TEST_STATES[];
+extern const int AK_TEST_N_STATES;
+/* True for a state of AK_TEST_STATES this model can reach (StepFailed: a model that can fail). */
+bool ak_test_state_reachable(unsigned int state);
+
+/* Bit-for-bit copy of an instance, to compare with after a call that must change nothing. */
+typedef struct {
+    ak_instance copy;
+} ak_snapshot;
+
+void ak_snapshot_take(ak_snapshot *snapshot, fmi2Component c);
+bool ak_snapshot_unchanged(const ak_snapshot *snapshot, fmi2Component c);
+/* The same inputs, parameters, input derivatives and time. What a call answered with
+ * fmi2Discard may change: the cache of the lazy evaluation, EulerRates' output
+ * singularity_distance, which is always the current one (the evaluation failed, the other
+ * outputs keep their last valid values: ak_test_outputs_consistent checks them), and, for
+ * fmi2DoStep, the state (StepFailed). */
+bool ak_snapshot_same_inputs(const ak_snapshot *snapshot, fmi2Component c);
+
+/* True when the instance's Real variables, read through fmi2GetReal, are bit for bit what a
+ * fresh evaluation of the model computes from the instance's inputs and parameters (or, after
+ * a failed evaluation, the last valid outputs with fmi2Discard): the lazy evaluation never serves
+ * stale outputs. For AngularKinematics with sequence body123, the main outputs are also compared
+ * with the hand-written core ak_angular_kinematics_123. */
+bool ak_test_outputs_consistent(fmi2Component c);
+
+/* The standard's name of a state (without the interface), and the same with " (ME)" for a
+ * model-exchange instance in the states both interfaces have (for the table). */
+/* The value references of the main output group, in value-reference order; how many. */
+size_t ak_test_main_outputs(fmi2ValueReference out[AK_MAX_VARIABLES]);
+
+/* The value reference of the variable of that name (the test fails hard if there is none). */
+fmi2ValueReference ak_test_vr(const char *name);
+
+const char *ak_test_state_name(unsigned int state);
+const char *ak_test_state_label(unsigned int state);
+
+#endif

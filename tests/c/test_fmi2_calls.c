@@ -1,0 +1,653 @@
+/* Drives every exported FMI 2.0 function through legal and illegal sequences and every row of the
+ * bad-input table, with a logger that keeps the messages and an allocator that counts. Checked
+ * after every call: the status, the exact messages, that a rejected call left the instance bit for
+ * bit unchanged and usable, and that nothing leaked. Built normally (ctest), with ASan+UBSan, and
+ * run under valgrind (scripts/check_sanitizers.sh).
+ *
+ *   test_fmi2_calls           run everything, print a summary
+ *   test_fmi2_calls --table   the same, then print the bad-input table as observed (markdown) */
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+#include "fmi2_bad_input_table.h"
+#include "fmi2_test_callbacks.h"
+#include "fmi2_test_instance.h"
+#include "fmi2_test_ops.h"
+
+static int failures = 0;
+static int checks = 0;
+
+static bool check(bool ok, const char *context, const char *what) {
+    checks++;
+    if (!ok) {
+        failures++;
+        printf("FAIL %s: %s\n", context, what);
+    }
+    return ok;
+}
+
+enum {
+    READABLE = AK_IN_INITIALIZATION_MODE | AK_IN_STEP_COMPLETE | AK_IN_STEP_FAILED |
+               AK_IN_TERMINATED | AK_IN_EVENT_MODE | AK_IN_CONTINUOUS_TIME_MODE
+};
+
+static const char *category_for(fmi2Status status) {
+    return status == fmi2Error ? "logStatusError" : "logStatusWarning";
+}
+
+/* Exactly one message, with this status, text and instance name; or none when text is NULL. */
+static void check_logged(const ak_recorder *recorder, const char *context, fmi2Status status,
+                         const char *text, const char *instance_name) {
+    check(recorder->contract_violations == 0, context, "the logger got a malformed message");
+    if (text == NULL) {
+        check(recorder->count == 0, context, "a message was logged where none should be");
+        return;
+    }
+    if (!check(recorder->count == 1, context, "not exactly one message logged")) {
+        for (size_t i = 0; i < recorder->count && i < AK_RECORDED_MESSAGES; i++) {
+            printf("     logged: %s\n", recorder->messages[i].text);
+        }
+        return;
+    }
+    const ak_recorded_message *m = &recorder->messages[0];
+    if (!check(strcmp(m->text, text) == 0, context, "wrong message")) {
+        printf("     logged:   %s\n     expected: %s\n", m->text, text);
+    }
+    check(m->status == status, context, "message logged with another status than returned");
+    check(strcmp(m->category, category_for(status)) == 0, context, "message in wrong category");
+    check(strcmp(m->instance_name, instance_name) == 0, context, "message names another instance");
+}
+
+/* After a rejected call the instance must go on as if the call never happened. */
+static void check_still_usable(fmi2Component c, unsigned int state, const char *context) {
+    if (state & READABLE) {
+        check(ak_test_outputs_consistent(c), context, "outputs unreadable or inconsistent after");
+    }
+    if (state == AK_IN_STEP_COMPLETE) {
+        check(fmi2DoStep(c, AK_TEST_STEP_COMPLETE_TIME, 0.5, fmi2True) == fmi2OK, context,
+              "cannot step after");
+    }
+    if (state == (AK_ME | AK_IN_CONTINUOUS_TIME_MODE)) {
+        fmi2Boolean enter = fmi2True, terminate = fmi2True;
+        check(fmi2SetTime(c, 0.5) == fmi2OK &&
+                  fmi2CompletedIntegratorStep(c, fmi2True, &enter, &terminate) == fmi2OK &&
+                  enter == fmi2False && terminate == fmi2False,
+              context, "cannot integrate after");
+    }
+}
+
+static void print_row(const char *state, const char *call, const char *status,
+                      const char *message) {
+    printf("| %s | `%s` | %s | %s%s%s |\n", state, call, status, message ? "`" : "",
+           message ? message : "(nothing logged)", message ? "`" : "");
+}
+
+static void run_bad_call(const ak_bad_call *bad, size_t row, bool print_table) {
+    char context[256];
+    snprintf(context, sizeof context, "bad call %zu: %s", row + 1, bad->call);
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    fmi2Component c = ak_test_instantiate_for(bad->in, "bad-input", &functions, false);
+    if (!check(c != NULL && ak_test_bring_to(c, bad->in), context, "setup failed")) {
+        if (c != NULL) {
+            fmi2FreeInstance(c);
+        }
+        return;
+    }
+    ak_args args = bad->args;
+    fmi2FMUstate state = NULL;
+    if (bad->with_fmu_state) {
+        check(fmi2GetFMUstate(c, &state) == fmi2OK, context, "fmi2GetFMUstate failed");
+        args.state = state;
+    }
+    ak_recorder_clear(&recorder);
+    ak_snapshot before;
+    ak_snapshot_take(&before, c);
+    const fmi2Status status = AK_OPS[bad->op].call(c, &args);
+    const bool status_ok = check(status == bad->status, context, "wrong status");
+    if (!status_ok) {
+        printf("     returned %s, expected %s\n", ak_status_name(status),
+               ak_status_name(bad->status));
+    }
+    check_logged(&recorder, context, status, bad->message, "bad-input");
+    /* A read answered with fmi2Discard ran the evaluation (which failed): see
+     * ak_snapshot_same_inputs. */
+    check(bad->status == fmi2Discard ? ak_snapshot_same_inputs(&before, c)
+                                     : ak_snapshot_unchanged(&before, c),
+          context, "the rejected call changed the instance");
+    const ak_recorder logged = recorder;
+    check_still_usable(c, bad->in, context);
+    if (state != NULL) {
+        check(fmi2FreeFMUstate(c, &state) == fmi2OK, context, "fmi2FreeFMUstate failed");
+    }
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated after freeing");
+    if (print_table && status_ok) {
+        print_row(ak_test_state_label(bad->in), bad->call, ak_status_name(status),
+                  logged.count == 1 ? logged.messages[0].text : NULL);
+    }
+}
+
+static void run_bad_calls(bool print_table) {
+    for (size_t row = 0; row < AK_N_BAD_CALLS; row++) {
+        run_bad_call(&AK_BAD_CALLS[row], row, print_table);
+    }
+    for (size_t row = 0; row < AK_N_MODEL_BAD_CALLS; row++) {
+        run_bad_call(&AK_MODEL_BAD_CALLS[row], AK_N_BAD_CALLS + row, print_table);
+    }
+}
+
+static void run_bad_instantiates(bool print_table) {
+    for (size_t row = 0; row < AK_N_BAD_INSTANTIATES; row++) {
+        const ak_bad_instantiate *bad = &AK_BAD_INSTANTIATES[row];
+        char context[256];
+        snprintf(context, sizeof context, "bad instantiate %zu: %s", row + 1, bad->call);
+        ak_recorder recorder;
+        ak_recorder_clear(&recorder);
+        fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+        if (bad->callbacks == AK_CALLBACKS_WITHOUT_MEMORY) {
+            functions.allocateMemory = NULL;
+            functions.freeMemory = NULL;
+        }
+        if (bad->callbacks == AK_CALLBACKS_WITHOUT_LOGGER) {
+            functions.logger = NULL;
+        }
+        const char *guid = bad->guid == AK_THIS_GUID ? AK_MODEL.guid : bad->guid;
+        char message[512];
+        if (bad->message != NULL) {
+            snprintf(message, sizeof message, "%s%s", bad->message,
+                     bad->guid_in_message ? AK_MODEL.guid : "");
+            if (bad->guid_in_message) {
+                const size_t used = strlen(message);
+                snprintf(message + used, sizeof message - used, "\" of this FMU's binary (%s)",
+                         AK_MODEL.model_identifier);
+            }
+        }
+        ak_test_fail_allocations(bad->allocations_before_failure, bad->failing_allocations);
+        fmi2Component c = fmi2Instantiate(
+            bad->instance_name, (fmi2Type)bad->fmu_type, guid, "file:///unused",
+            bad->callbacks == AK_NULL_CALLBACKS ? NULL : &functions, fmi2False, fmi2False);
+        ak_test_fail_allocations(-1, 0);
+        check(c == NULL, context, "an instance was created");
+        check_logged(&recorder, context, fmi2Error, bad->message ? message : NULL,
+                     bad->instance_name ? bad->instance_name : "");
+        check(ak_test_live_allocations() == 0, context, "memory left allocated");
+        if (print_table && c == NULL) {
+            print_row("(none)", bad->call, "NULL",
+                      recorder.count == 1 ? recorder.messages[0].text : NULL);
+        }
+    }
+}
+
+/* Arguments harmless to every op, with room for any single result. */
+static ak_args benign_args(double time, ak_result result[2]) {
+    ak_args args = {0};
+    args.real[0] = time;
+    args.real[1] = 0.1;
+    args.real[2] = AK_TEST_STOP_TIME;
+    args.flag[0] = fmi2True;
+    args.kind = fmi2LastSuccessfulTime;
+    args.out = &result[0];
+    args.out2 = &result[1];
+    return args;
+}
+
+/* Every op with c = NULL: fmi2Error (fmi2FreeInstance: nothing), no crash, nothing allocated. */
+static bool run_null_instance(void) {
+    const int failures_before = failures;
+    for (int op = 0; op < AK_N_OPS; op++) {
+        ak_result result[2] = {{0}};
+        const ak_args args = benign_args(0.0, result);
+        const fmi2Status status = AK_OPS[op].call(NULL, &args);
+        check(status == (op == AK_OP_FREE_INSTANCE ? fmi2OK : fmi2Error), AK_OPS[op].name,
+              "wrong status for c = NULL");
+    }
+    check(ak_test_live_allocations() == 0, "c = NULL", "memory allocated");
+    return failures == failures_before;
+}
+
+/* Every op in every reachable state of both interfaces: a function of the other interface gets
+ * fmi2Error and "<function>: a <interface> function, but this instance was created for ..."; where
+ * the standard forbids it, fmi2Error, one message "<function>: illegal call in state <state>" and
+ * nothing changed; where it allows it, no such message. */
+static bool run_state_matrix(void) {
+    const int failures_before = failures;
+    for (int op = 0; op < AK_N_OPS; op++) {
+        for (int s = 0; s < AK_TEST_N_STATES; s++) {
+            const unsigned int state = AK_TEST_STATES[s];
+            if (!ak_test_state_reachable(state)) {
+                continue;
+            }
+            char context[160];
+            snprintf(context, sizeof context, "%s in state %s", AK_OPS[op].name,
+                     ak_test_state_label(state));
+            ak_recorder recorder;
+            ak_recorder_clear(&recorder);
+            const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+            fmi2Component c = ak_test_instantiate_for(state, "matrix", &functions, false);
+            if (!check(c != NULL && ak_test_bring_to(c, state), context, "setup failed")) {
+                continue;
+            }
+            ak_recorder_clear(&recorder);
+            const double time = ((const ak_instance *)c)->time;
+            ak_result result[2] = {{0}};
+            const ak_args args = benign_args(time, result);
+            ak_snapshot before;
+            ak_snapshot_take(&before, c);
+            const fmi2Status status = AK_OPS[op].call(c, &args);
+            const bool me = (state & AK_ME) != 0;
+            char refusal[200];
+            if ((AK_OPS[op].interfaces & (me ? AK_FOR_ME : AK_FOR_CS)) == 0) {
+                snprintf(refusal, sizeof refusal,
+                         "%s: a %s function, but this instance was created for %s",
+                         AK_OPS[op].name, me ? "co-simulation" : "model-exchange",
+                         me ? "model exchange (fmi2ModelExchange)"
+                            : "co-simulation (fmi2CoSimulation)");
+            } else {
+                snprintf(refusal, sizeof refusal, "%s: illegal call in state %s",
+                         AK_OPS[op].name, ak_test_state_name(state));
+            }
+            const bool allowed = (AK_OPS[op].allowed_in & state) != 0 &&
+                                 (AK_OPS[op].interfaces & (me ? AK_FOR_ME : AK_FOR_CS)) != 0;
+            if (!allowed) {
+                check(status == fmi2Error, context, "forbidden call not refused");
+                check_logged(&recorder, context, fmi2Error, refusal, "matrix");
+                check(ak_snapshot_unchanged(&before, c), context, "forbidden call changed it");
+            } else {
+                check(recorder.count == 0 || strcmp(recorder.messages[0].text, refusal) != 0,
+                      context, "allowed call refused as illegal");
+            }
+            if (op != AK_OP_FREE_INSTANCE) {
+                if ((op == AK_OP_GET_FMU_STATE || op == AK_OP_DE_SERIALIZE_FMU_STATE) &&
+                    status == fmi2OK) {
+                    fmi2FreeFMUstate(c, &result[0].state);
+                }
+                fmi2FreeInstance(c);
+            }
+            check(ak_test_live_allocations() == 0, context, "memory left allocated");
+        }
+    }
+    return failures == failures_before;
+}
+
+static const fmi2ValueReference INPUT_VRS[AK_TEST_N_INPUTS] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+
+/* A whole simulation, a reset from every state and a second simulation: all fmi2OK, outputs
+ * always the model's, and not one message at the default logging level. */
+static void run_legal_sequences(void) {
+    const char *context = "legal sequence";
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    fmi2Component c = ak_test_instantiate("legal", &functions, false);
+    if (!check(c != NULL, context, "instantiation failed")) {
+        return;
+    }
+    for (int s = 0; s < AK_TEST_N_STATES; s++) {
+        if ((AK_TEST_STATES[s] & AK_ME) || !ak_test_state_reachable(AK_TEST_STATES[s])) {
+            continue;
+        }
+        check(ak_test_bring_to(c, AK_TEST_STATES[s]), context, "cannot reach state");
+        check(fmi2Reset(c) == fmi2OK, context, "reset failed");
+        const ak_instance *instance = c;
+        check(instance->state == AK_STATE_INSTANTIATED && instance->time == 0.0, context,
+              "reset did not bring back the initial condition");
+        for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+            const ak_variable *variable = ak_variable_of((unsigned int)vr);
+            check(variable == NULL || variable->causality == AK_CAUSALITY_OUTPUT
+                      ? true
+                      : instance->data.values[vr] == variable->start,
+                  context,
+                  "reset did not restore the start values");
+        }
+    }
+    ak_recorder_clear(&recorder); /* bringing EulerRates to StepFailed logs why the step failed */
+    check(ak_test_bring_to(c, AK_IN_STEP_COMPLETE), context, "cannot initialize after reset");
+    double time = AK_TEST_STEP_COMPLETE_TIME;
+    for (int step = 0; step < 1000; step++) {
+        fmi2Real inputs[AK_TEST_N_INPUTS];
+        for (int i = 0; i < AK_TEST_N_INPUTS; i++) {
+            /* theta[2] (i = 1) stays within 1 rad of 0: away from EulerRates' singularity. */
+            inputs[i] = sin(0.01 * step * (i + 1)) * (i == 1 ? 1.0 : i + 1);
+        }
+        if (step % 3 != 0) { /* sometimes the master does not set the inputs at all */
+            check(fmi2SetReal(c, INPUT_VRS, AK_TEST_N_INPUTS, inputs) == fmi2OK, context, "set");
+        }
+        check(ak_test_outputs_consistent(c), context, "outputs are not the core's");
+        check(fmi2DoStep(c, time, 0.005, fmi2False) == fmi2OK, context, "step");
+        time += 0.005;
+    }
+    fmi2Real last_time = 0.0;
+    fmi2Boolean terminated = fmi2True;
+    check(fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &last_time) == fmi2OK &&
+              last_time == time,
+          context, "fmi2LastSuccessfulTime is not the end of the last step");
+    check(fmi2GetBooleanStatus(c, fmi2Terminated, &terminated) == fmi2OK &&
+              terminated == fmi2False,
+          context, "fmi2Terminated status");
+    /* A step too small to move the time in double precision is still a step > 0. */
+    check(fmi2DoStep(c, time, 5e-324, fmi2True) == fmi2OK &&
+              fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &last_time) == fmi2OK &&
+              last_time == time,
+          context, "denormal step");
+    check(fmi2Terminate(c) == fmi2OK, context, "terminate");
+    check(ak_test_outputs_consistent(c), context, "outputs after terminate");
+    check(recorder.count == 0, context, "messages logged at the default logging level");
+    /* Huge but finite inputs are legal; the outputs may overflow (EulerRates: the evaluation may
+     * fail, or warn), but stay the model's. */
+    check(fmi2Reset(c) == fmi2OK && fmi2SetReal(c, INPUT_VRS, AK_TEST_N_INPUTS,
+                                                (const fmi2Real[]){1e300, -1e300, 1e300, 1e200,
+                                                                   1e200, -1e200, 1e308, 5e-324,
+                                                                   -1e-310}) == fmi2OK,
+          context, "huge finite inputs refused");
+    check(fmi2EnterInitializationMode(c) == fmi2OK && ak_test_outputs_consistent(c), context,
+          "outputs for huge inputs are not the model's");
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
+/* Model exchange: the whole cycle (no continuous states, no event indicators: the master only
+ * sets time and inputs and reads outputs), all fmi2OK, outputs always the model's, no message. */
+static void run_model_exchange(void) {
+    const char *context = "model exchange";
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    fmi2Component c = ak_test_instantiate_for(AK_ME, "me", &functions, false);
+    if (!check(c != NULL && fmi2GetNominalsOfContinuousStates(c, NULL, 0) == fmi2OK &&
+                   ak_test_bring_to(c, AK_ME | AK_IN_EVENT_MODE),
+               context, "setup failed")) {
+        return;
+    }
+    fmi2EventInfo info;
+    memset(&info, 0xff, sizeof info);
+    check(fmi2NewDiscreteStates(c, &info) == fmi2OK && info.newDiscreteStatesNeeded == fmi2False &&
+              info.terminateSimulation == fmi2False && info.nextEventTimeDefined == fmi2False,
+          context, "fmi2NewDiscreteStates");
+    check(fmi2EnterContinuousTimeMode(c) == fmi2OK, context, "enter continuous-time mode");
+    for (int step = 1; step <= 1000; step++) {
+        const double time = 0.001 * step;
+        fmi2Real inputs[AK_TEST_N_INPUTS];
+        for (int i = 0; i < AK_TEST_N_INPUTS; i++) {
+            inputs[i] = cos(time * (i + 1)) * (i == 1 ? 1.0 : i + 1);
+        }
+        fmi2Boolean enter = fmi2True, terminate = fmi2True;
+        check(fmi2SetTime(c, time) == fmi2OK &&
+                  fmi2SetReal(c, INPUT_VRS, AK_TEST_N_INPUTS, inputs) == fmi2OK &&
+                  fmi2SetContinuousStates(c, NULL, 0) == fmi2OK &&
+                  fmi2GetDerivatives(c, NULL, 0) == fmi2OK &&
+                  fmi2GetEventIndicators(c, NULL, 0) == fmi2OK,
+              context, "a step of the integrator");
+        check(ak_test_outputs_consistent(c), context, "outputs are not the model's");
+        check(fmi2CompletedIntegratorStep(c, step % 2, &enter, &terminate) == fmi2OK &&
+                  enter == fmi2False && terminate == fmi2False,
+              context, "fmi2CompletedIntegratorStep");
+        if (step % 250 == 0) {
+            check(fmi2EnterEventMode(c) == fmi2OK && fmi2NewDiscreteStates(c, &info) == fmi2OK &&
+                      fmi2EnterContinuousTimeMode(c) == fmi2OK,
+                  context, "an event iteration");
+        }
+    }
+    check(fmi2GetContinuousStates(c, NULL, 0) == fmi2OK && fmi2Terminate(c) == fmi2OK &&
+              ak_test_outputs_consistent(c) && fmi2GetDerivatives(c, NULL, 0) == fmi2OK,
+          context, "terminate");
+    check(fmi2Reset(c) == fmi2OK && ak_test_bring_to(c, AK_ME | AK_IN_CONTINUOUS_TIME_MODE),
+          context, "reset and again");
+    check(recorder.count == 0, context, "messages logged at the default logging level");
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
+/* FMU state: get, step on, set back (bit for bit the values, time and state of then), serialize
+ * and deserialize, and every serialized state with one byte changed refused (fmi2Error, the
+ * handle untouched), in both interfaces. */
+static void run_fmu_state(unsigned int interface) {
+    const char *context = interface ? "FMU state (model exchange)" : "FMU state (co-simulation)";
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    const unsigned int state = interface | (interface ? AK_IN_EVENT_MODE : AK_IN_STEP_COMPLETE);
+    fmi2Component c = ak_test_instantiate_for(state, "state", &functions, false);
+    if (!check(c != NULL && ak_test_bring_to(c, state), context, "setup failed")) {
+        return;
+    }
+    if (!interface) {
+        const fmi2Integer order[2] = {1, 2};
+        const fmi2Real derivative[2] = {0.25, -0.5};
+        check(fmi2SetRealInputDerivatives(c, INPUT_VRS, 2, order, derivative) == fmi2OK, context,
+              "input derivatives");
+    }
+    ak_snapshot then;
+    ak_snapshot_take(&then, c);
+    fmi2FMUstate saved = NULL, restored = NULL;
+    check(fmi2GetFMUstate(c, &saved) == fmi2OK && saved != NULL, context, "get");
+    const fmi2Real other[AK_TEST_N_INPUTS] = {-1, 0.2, 3, 4, 5, 6, 7, 8, 9};
+    check(fmi2SetReal(c, INPUT_VRS, AK_TEST_N_INPUTS, other) == fmi2OK, context, "set inputs");
+    if (!interface) {
+        check(fmi2DoStep(c, AK_TEST_STEP_COMPLETE_TIME, 0.5, fmi2True) == fmi2OK, context, "step");
+    } else {
+        check(fmi2SetTime(c, 3.0) == fmi2OK && fmi2EnterContinuousTimeMode(c) == fmi2OK, context,
+              "on");
+    }
+    check(fmi2SetFMUstate(c, saved) == fmi2OK, context, "set");
+    const ak_instance *now = c, *was = &then.copy;
+    check(memcmp(now->data.values, was->data.values, sizeof now->data.values) == 0 && now->time == was->time &&
+              now->state == was->state &&
+              memcmp(now->data.input_derivatives, was->data.input_derivatives,
+                     sizeof now->data.input_derivatives) == 0,
+          context, "the state set back is not the state got");
+    check(ak_test_outputs_consistent(c), context, "outputs after set");
+    size_t size = 0;
+    check(fmi2SerializedFMUstateSize(c, saved, &size) == fmi2OK && size > 0 && size < 4096, context,
+          "size");
+    fmi2Byte bytes[4096];
+    check(fmi2SerializeFMUstate(c, saved, bytes, size) == fmi2OK, context, "serialize");
+    check(fmi2DeSerializeFMUstate(c, bytes, size, &restored) == fmi2OK && restored != NULL &&
+              fmi2SetFMUstate(c, restored) == fmi2OK && ak_test_outputs_consistent(c),
+          context, "deserialize and set");
+    size_t refused = 0;
+    for (size_t i = 0; i < size; i++) {
+        bytes[i] ^= 0x5a;
+        fmi2FMUstate corrupt = NULL;
+        ak_recorder_clear(&recorder);
+        refused += fmi2DeSerializeFMUstate(c, bytes, size, &corrupt) == fmi2Error &&
+                   corrupt == NULL && recorder.count == 1;
+        bytes[i] ^= 0x5a;
+    }
+    check(refused == size, context, "a serialized state with a changed byte was accepted");
+    ak_recorder_clear(&recorder);
+    check(fmi2DeSerializeFMUstate(c, bytes, size - 1, &restored) == fmi2Error, context,
+          "a truncated state was accepted");
+    check(fmi2FreeFMUstate(c, &saved) == fmi2OK && saved == NULL &&
+              fmi2FreeFMUstate(c, &restored) == fmi2OK && restored == NULL,
+          context, "free");
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
+/* The model's parameters, and EulerRates' singular configuration: near it fmi2Warning with one
+ * message naming theta[2]; at it fmi2Discard, a failed step (StepFailed) that keeps the last valid
+ * time and outputs, and recovery by fmi2SetFMUstate or fmi2Reset. */
+static void run_model_specific(void) {
+    const char *context = AK_MODEL.model_identifier;
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    fmi2Component c = ak_test_instantiate("model", &functions, false);
+    if (!check(c != NULL, context, "instantiation failed")) {
+        return;
+    }
+    const fmi2ValueReference sequence_vr = ak_test_vr("sequence");
+    /* Every sequence: through fmi2SetInteger, then a simulation whose outputs are the model's. */
+    for (fmi2Integer sequence = 1; sequence <= 24; sequence++) {
+        check(fmi2Reset(c) == fmi2OK && fmi2SetInteger(c, &sequence_vr, 1, &sequence) == fmi2OK,
+              context, "set sequence");
+        if (AK_MODEL.evaluate_in_step) { /* EulerRates: the other frame and a tolerance too */
+            const fmi2ValueReference frame_vr = ak_test_vr("frame"), tolerance_vr = ak_test_vr("tolerance");
+            const fmi2Integer frame = 1 + sequence % 2;
+            const fmi2Real tolerance = 0.01;
+            check(fmi2SetInteger(c, &frame_vr, 1, &frame) == fmi2OK &&
+                      fmi2SetReal(c, &tolerance_vr, 1, &tolerance) == fmi2OK,
+                  context, "set frame and tolerance");
+        }
+        fmi2Integer got = 0;
+        check(ak_test_bring_to(c, AK_IN_STEP_COMPLETE) &&
+                  fmi2GetInteger(c, &sequence_vr, 1, &got) == fmi2OK && got == sequence &&
+                  ak_test_outputs_consistent(c),
+              context, "a step with that sequence");
+    }
+    check(recorder.count == 0, context, "messages logged for the 24 sequences");
+    if (AK_MODEL.evaluate_in_step) {
+        const fmi2ValueReference theta2 = 1;
+        check(fmi2Reset(c) == fmi2OK && ak_test_bring_to(c, AK_IN_STEP_COMPLETE), context, "reset");
+        fmi2FMUstate good = NULL;
+        check(fmi2GetFMUstate(c, &good) == fmi2OK, context, "get state");
+        ak_recorder_clear(&recorder);
+        const fmi2Real near = AK_TEST_SINGULAR_THETA2 - 1e-6;
+        fmi2Real value = 0.0;
+        check(fmi2SetReal(c, &theta2, 1, &near) == fmi2OK &&
+                  fmi2GetReal(c, (const fmi2ValueReference[]){9}, 1, &value) == fmi2Warning &&
+                  recorder.count == 1 && recorder.messages[0].status == fmi2Warning &&
+                  strstr(recorder.messages[0].text, "theta[2]") != NULL,
+              context, "near the singularity: fmi2Warning naming theta[2]");
+        const fmi2Real singular = AK_TEST_SINGULAR_THETA2;
+        ak_recorder_clear(&recorder);
+        check(fmi2SetReal(c, &theta2, 1, &singular) == fmi2OK &&
+                  fmi2DoStep(c, AK_TEST_STEP_COMPLETE_TIME, 0.5, fmi2True) == fmi2Discard &&
+                  recorder.count == 2 && strstr(recorder.messages[0].text, "theta[2]") != NULL &&
+                  recorder.messages[0].status == fmi2Discard &&
+                  strstr(recorder.messages[1].text, "fmi2DoStep: the step from 1 to 1.5 is "
+                                                    "discarded") != NULL,
+              context, "at the singularity: fmi2Discard naming theta[2]");
+        fmi2Real last = -1.0;
+        fmi2Boolean terminated = fmi2True;
+        check(((const ak_instance *)c)->state == AK_STATE_STEP_FAILED &&
+                  fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &last) == fmi2OK &&
+                  last == AK_TEST_STEP_COMPLETE_TIME &&
+                  fmi2GetBooleanStatus(c, fmi2Terminated, &terminated) == fmi2OK &&
+                  terminated == fmi2False && ak_test_outputs_consistent(c),
+              context, "after the failed step");
+        check(fmi2SetFMUstate(c, good) == fmi2OK &&
+                  fmi2DoStep(c, AK_TEST_STEP_COMPLETE_TIME, 0.5, fmi2True) == fmi2OK &&
+                  ak_test_outputs_consistent(c),
+              context, "recovery through fmi2SetFMUstate");
+        check(fmi2FreeFMUstate(c, &good) == fmi2OK, context, "free state");
+    }
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
+/* fmi2SetDebugLogging switches categories; '%' in what the FMU logs reaches the master intact. */
+static void run_logging(void) {
+    const char *context = "logging";
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    const char *name = "100% sure: %s%n%d";
+    fmi2Component c = ak_test_instantiate(name, &functions, true);
+    if (!check(c != NULL, context, "instantiation failed")) {
+        return;
+    }
+    check(recorder.count == 1 &&
+              strcmp(recorder.messages[0].text,
+                     "fmi2Instantiate: instance \"100% sure: %s%n%d\" created") == 0 &&
+              strcmp(recorder.messages[0].instance_name, name) == 0,
+          context, "'%' not escaped for the master's printf");
+    ak_recorder_clear(&recorder);
+    check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){0.1}) == fmi2OK && recorder.count == 2 &&
+              strcmp(recorder.messages[1].text, "fmi2SetReal: theta[1] = 0.10000000000000001") == 0 &&
+              strcmp(recorder.messages[1].category, "logCalls") == 0,
+          context, "logCalls trace of fmi2SetReal");
+    ak_recorder_clear(&recorder);
+    check(fmi2SetDebugLogging(c, fmi2False, 0, NULL) == fmi2OK, context, "all off");
+    ak_recorder_clear(&recorder); /* the trace of the switch itself */
+    check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){NAN}) == fmi2Error &&
+              recorder.count == 0,
+          context, "a category switched off still logs");
+    check(fmi2SetDebugLogging(c, fmi2True, 1, (const fmi2String[]){"logStatusError"}) == fmi2OK,
+          context, "errors on");
+    ak_recorder_clear(&recorder);
+    check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){NAN}) == fmi2Error &&
+              recorder.count == 1 && strcmp(recorder.messages[0].category, "logStatusError") == 0,
+          context, "logStatusError switched on does not log");
+    /* Any non-zero fmi2Boolean is true. */
+    check(fmi2SetDebugLogging(c, 7, 1, (const fmi2String[]){"logCalls"}) == fmi2OK, context,
+          "loggingOn = 7");
+    ak_recorder_clear(&recorder);
+    check(fmi2SetReal(c, INPUT_VRS, 1, (const fmi2Real[]){0.2}) == fmi2OK && recorder.count == 2,
+          context, "loggingOn = 7 did not switch logCalls on");
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
+/* A master may give no logger: bad calls are still refused, silently, and nothing breaks. */
+static void run_without_logger(void) {
+    const char *context = "no logger";
+    ak_recorder recorder;
+    ak_recorder_clear(&recorder);
+    fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
+    functions.logger = NULL;
+    fmi2Component c = ak_test_instantiate("silent", &functions, true);
+    if (!check(c != NULL && ak_test_bring_to(c, AK_IN_STEP_COMPLETE), context, "setup failed")) {
+        return;
+    }
+    for (size_t row = 0; row < AK_N_BAD_CALLS + AK_N_MODEL_BAD_CALLS; row++) {
+        const ak_bad_call *bad = row < AK_N_BAD_CALLS ? &AK_BAD_CALLS[row]
+                                                      : &AK_MODEL_BAD_CALLS[row - AK_N_BAD_CALLS];
+        if (bad->in == AK_IN_STEP_COMPLETE && !bad->with_fmu_state) {
+            check(AK_OPS[bad->op].call(c, &bad->args) == bad->status, context, bad->call);
+        }
+    }
+    check(ak_test_outputs_consistent(c) && recorder.count == 0, context, "after the bad calls");
+    fmi2FreeInstance(c);
+    check(ak_test_live_allocations() == 0, context, "memory left allocated");
+}
+
+/* Version and platform strings, needing no instance. */
+static void run_instance_free_functions(void) {
+    check(strcmp(fmi2GetVersion(), "2.0") == 0, "fmi2GetVersion", "not 2.0");
+    check(strcmp(fmi2GetTypesPlatform(), "default") == 0, "fmi2GetTypesPlatform", "not default");
+}
+
+int main(int argc, char **argv) {
+    const bool print_table = argc > 1 && strcmp(argv[1], "--table") == 0;
+    if (print_table) {
+        printf("| State | Call | Status | Message logged |\n|---|---|---|---|\n");
+    }
+    int n_states = 0;
+    for (int s = 0; s < AK_TEST_N_STATES; s++) {
+        n_states += ak_test_state_reachable(AK_TEST_STATES[s]);
+    }
+    run_bad_instantiates(print_table);
+    run_bad_calls(print_table);
+    const bool null_ok = run_null_instance();
+    const bool matrix_ok = run_state_matrix();
+    if (print_table && null_ok) {
+        print_row("(none)",
+                  "any function but fmi2Instantiate with c = NULL (fmi2FreeInstance returns "
+                  "nothing)",
+                  "fmi2Error", NULL);
+    }
+    if (print_table && matrix_ok) {
+        print_row("any", "any function in a state where FMI 2.0 forbids it", "fmi2Error",
+                  "<function>: illegal call in state <state>");
+    }
+    run_legal_sequences();
+    run_model_exchange();
+    run_fmu_state(0);
+    run_fmu_state(AK_ME);
+    run_model_specific();
+    run_logging();
+    run_without_logger();
+    run_instance_free_functions();
+    fprintf(print_table ? stderr : stdout,
+            "test_fmi2_calls (%s): %d checks, %d failures (%zu bad calls, %zu bad "
+            "instantiations, %d functions x %d states)\n",
+            AK_MODEL.model_identifier, checks, failures, AK_N_BAD_CALLS + AK_N_MODEL_BAD_CALLS,
+            AK_N_BAD_INSTANTIATES, (int)AK_N_OPS, n_states);
+    return failures == 0 ? 0 : 1;
+}

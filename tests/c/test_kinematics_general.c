@@ -1,0 +1,380 @@
+/* Unit tests of the general kinematics core (all 24 sequences), independent of the FMI layer.
+ *
+ * Each check derives the expected value another way than the core does:
+ *   - R from the product of elementary rotation matrices in the order the sequence states;
+ *   - omega_fixed from the skew matrix dR/dt R^T (dR/dt by the chain rule), omega_body = R^T omega;
+ *   - alpha, W_dot from central differences along a smooth trajectory;
+ *   - q through the rotation matrix it defines;
+ *   - the inverse map by a round trip through the forward map;
+ *   - body123 against the hand-written 1-2-3 core of kinematics.c.
+ */
+#include "kinematics_123.h"
+#include "rotation_matrices.h"
+#include "kinematics_general.h"
+#include "sequences.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Index of the sequence with that name, or -1. */
+static int ak_sequence_index(const char *name) {
+    if (name == NULL) {
+        return -1;
+    }
+    for (int k = 0; k < AK_SEQUENCE_COUNT; k++) {
+        if (strcmp(AK_SEQUENCES[k].name, name) == 0) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+static int failures = 0;
+static int checks = 0;
+
+static void check(const char *sequence, const char *what, int ok) {
+    checks++;
+    if (!ok) {
+        failures++;
+        printf("FAIL %s: %s\n", sequence, what);
+    }
+}
+
+static void check_close(const char *sequence, const char *what, double got, double expected,
+                        double tolerance) {
+    checks++;
+    if (!(fabs(got - expected) <= tolerance)) {
+        failures++;
+        printf("FAIL %s: %s: got %.17g expected %.17g (tolerance %g)\n", sequence, what, got,
+               expected, tolerance);
+    }
+}
+
+static double random_in(double low, double high) {
+    return low + (high - low) * ((double)rand() / (double)RAND_MAX);
+}
+
+/* Magnitudes from 1e-3 to 1e3, either sign. */
+static double random_rate(void) {
+    return pow(10.0, random_in(-3.0, 3.0)) * (rand() % 2 ? 1.0 : -1.0);
+}
+
+/* R and dR/dt as the product in the order the sequence states: M[k] belongs to theta_k. */
+static void reference_rotation(const ak_sequence *seq, const double theta[3], const double td[3],
+                               double R[3][3], double Rdot[3][3]) {
+    double M[3][3][3], dM[3][3][3];
+    int order[3];
+    for (int k = 0; k < 3; k++) {
+        elementary_rotation(seq->axes[k] - 1, theta[k], M[k], dM[k]);
+        order[k] = (seq->kind == AK_BODY_FIXED) ? k : 2 - k;
+    }
+    double P[3][3], Q[3][3];
+    multiply(M[order[0]], M[order[1]], P);
+    multiply(P, M[order[2]], R);
+    memset(Rdot, 0, sizeof(double) * 9);
+    for (int a = 0; a < 3; a++) {
+        double *F[3];
+        for (int n = 0; n < 3; n++) {
+            F[n] = (order[n] == a) ? &dM[a][0][0] : &M[order[n]][0][0];
+        }
+        multiply((double (*)[3])F[0], (double (*)[3])F[1], P);
+        multiply(P, (double (*)[3])F[2], Q);
+        for (int r = 0; r < 3; r++) {
+            for (int k = 0; k < 3; k++) {
+                Rdot[r][k] += Q[r][k] * td[a];
+            }
+        }
+    }
+}
+
+static void transpose_times(double R[3][3], const double v[3], double out[3]) {
+    for (int k = 0; k < 3; k++) {
+        out[k] = R[0][k] * v[0] + R[1][k] * v[1] + R[2][k] * v[2];
+    }
+}
+
+static void times(double M[3][3], const double v[3], double out[3]) {
+    for (int k = 0; k < 3; k++) {
+        out[k] = M[k][0] * v[0] + M[k][1] * v[1] + M[k][2] * v[2];
+    }
+}
+
+static double det3(double M[3][3]) {
+    return M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
+           M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+           M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+}
+
+static void check_rotation(const ak_sequence *seq, const double theta[3], const double td[3]) {
+    double R_ref[3][3], Rdot[3][3], R[3][3], q[4];
+    reference_rotation(seq, theta, td, R_ref, Rdot);
+    ak_general_rotation_matrix(seq, theta, R);
+    for (int r = 0; r < 3; r++) {
+        for (int k = 0; k < 3; k++) {
+            check_close(seq->name, "R = product of elementary rotations", R[r][k], R_ref[r][k], 1e-15);
+            const double RRt = R[r][0] * R[k][0] + R[r][1] * R[k][1] + R[r][2] * R[k][2];
+            check_close(seq->name, "R R^T = I", RRt, r == k ? 1.0 : 0.0, 1e-15);
+        }
+    }
+    check_close(seq->name, "det R = 1", det3(R), 1.0, 1e-15);
+
+    ak_general_quaternion(seq, theta, q);
+    check_close(seq->name, "|q| = 1", q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0, 1e-15);
+    check(seq->name, "q0 >= 0", q[0] >= 0.0);
+    const double Rq[3][3] = {
+        {1 - 2 * (q[2] * q[2] + q[3] * q[3]), 2 * (q[1] * q[2] - q[0] * q[3]), 2 * (q[1] * q[3] + q[0] * q[2])},
+        {2 * (q[1] * q[2] + q[0] * q[3]), 1 - 2 * (q[1] * q[1] + q[3] * q[3]), 2 * (q[2] * q[3] - q[0] * q[1])},
+        {2 * (q[1] * q[3] - q[0] * q[2]), 2 * (q[2] * q[3] + q[0] * q[1]), 1 - 2 * (q[1] * q[1] + q[2] * q[2])}};
+    for (int r = 0; r < 3; r++) {
+        for (int k = 0; k < 3; k++) {
+            check_close(seq->name, "R(q) = R", Rq[r][k], R_ref[r][k], 2e-15);
+        }
+    }
+    /* theta + 2 pi on one angle is the same orientation, hence the same q. */
+    double shifted[3] = {theta[0], theta[1], theta[2] + 6.283185307179586}, q2[4];
+    ak_general_quaternion(seq, shifted, q2);
+    for (int k = 0; k < 4; k++) {
+        check_close(seq->name, "q(theta3 + 2 pi) = q(theta)", q2[k], q[k], 1e-14);
+    }
+}
+
+static void check_velocity(const ak_sequence *seq, const double theta[3], const double td[3],
+                           const double tdd[3]) {
+    double R[3][3], Rdot[3][3], S[3][3];
+    double wf[3], wb[3], af[3], ab[3], rotated[3], Wf[3][3], Wb[3][3], Wfd[3][3], Wbd[3][3], x[3];
+    const double scale_w = fabs(td[0]) + fabs(td[1]) + fabs(td[2]);
+    const double scale_a = fabs(tdd[0]) + fabs(tdd[1]) + fabs(tdd[2]) + scale_w * scale_w;
+    reference_rotation(seq, theta, td, R, Rdot);
+    for (int r = 0; r < 3; r++) {
+        for (int k = 0; k < 3; k++) {
+            S[r][k] = Rdot[r][0] * R[k][0] + Rdot[r][1] * R[k][1] + Rdot[r][2] * R[k][2];
+        }
+    }
+    ak_general_angular_kinematics(seq, theta, td, tdd, wf, wb, af, ab);
+    check_close(seq->name, "omega_fixed[1] vs skew(dR/dt R^T)", wf[0], S[2][1], 1e-14 * scale_w);
+    check_close(seq->name, "omega_fixed[2] vs skew(dR/dt R^T)", wf[1], S[0][2], 1e-14 * scale_w);
+    check_close(seq->name, "omega_fixed[3] vs skew(dR/dt R^T)", wf[2], S[1][0], 1e-14 * scale_w);
+    transpose_times(R, wf, rotated);
+    for (int k = 0; k < 3; k++) {
+        check_close(seq->name, "omega_body = R^T omega_fixed", wb[k], rotated[k], 1e-14 * scale_w);
+    }
+    transpose_times(R, af, rotated);
+    for (int k = 0; k < 3; k++) {
+        check_close(seq->name, "alpha_body = R^T alpha_fixed", ab[k], rotated[k], 1e-14 * scale_a);
+    }
+
+    ak_general_partials(seq, theta, td, Wf, Wb, Wfd, Wbd);
+    times(Wf, td, x);
+    for (int k = 0; k < 3; k++) {
+        check_close(seq->name, "omega_fixed = W_fixed theta_dot", x[k], wf[k], 1e-14 * scale_w);
+    }
+    times(Wb, td, x);
+    for (int k = 0; k < 3; k++) {
+        check_close(seq->name, "omega_body = W_body theta_dot", x[k], wb[k], 1e-14 * scale_w);
+    }
+    for (int r = 0; r < 3; r++) {
+        for (int k = 0; k < 3; k++) {
+            const double rotated_column = R[0][r] * Wf[0][k] + R[1][r] * Wf[1][k] + R[2][r] * Wf[2][k];
+            check_close(seq->name, "W_body = R^T W_fixed", Wb[r][k], rotated_column, 1e-15);
+        }
+    }
+    const double d = ak_singularity_distance(seq, theta);
+    const double expected_d = seq->proper_euler ? fabs(sin(theta[1])) : fabs(cos(theta[1]));
+    check_close(seq->name, "distance = |cos theta2| or |sin theta2|", d, expected_d, 0.0);
+    check_close(seq->name, "|det W_fixed| = distance", fabs(det3(Wf)), d, 1e-15);
+    /* The signs stated in kinematics_general.h, section 4. */
+    const int cyclic = (seq->axes[1] - seq->axes[0] + 3) % 3 == 1;
+    const double signed_det = seq->proper_euler
+                                  ? (seq->kind == AK_SPACE_FIXED ? 1.0 : -1.0) * sin(theta[1])
+                                  : (cyclic ? 1.0 : -1.0) * cos(theta[1]);
+    check_close(seq->name, "det W_fixed = eps cos theta2 or -+sin theta2", det3(Wf), signed_det, 1e-15);
+    check_close(seq->name, "|det W_body| = distance", fabs(det3(Wb)), d, 1e-15);
+
+    /* Along theta(t) = theta + td t + tdd t^2 / 2: alpha = d(omega)/dt and W_dot = dW/dt,
+     * a fourth-order central difference. */
+    const double h = 1e-3 / (1.0 + scale_w + sqrt(fabs(tdd[0]) + fabs(tdd[1]) + fabs(tdd[2])));
+    const double offsets[4] = {-2 * h, -h, h, 2 * h}, weights[4] = {1, -8, 8, -1};
+    double dwf[3] = {0}, dwb[3] = {0}, dWf[3][3] = {{0}}, dWb[3][3] = {{0}};
+    for (int n = 0; n < 4; n++) {
+        double th[3], thd[3], w1[3], w2[3], a1[3], a2[3], Wf_n[3][3], Wb_n[3][3], unused[2][3][3];
+        for (int k = 0; k < 3; k++) {
+            th[k] = theta[k] + td[k] * offsets[n] + 0.5 * tdd[k] * offsets[n] * offsets[n];
+            thd[k] = td[k] + tdd[k] * offsets[n];
+        }
+        ak_general_angular_kinematics(seq, th, thd, tdd, w1, w2, a1, a2);
+        ak_general_partials(seq, th, thd, Wf_n, Wb_n, unused[0], unused[1]);
+        for (int r = 0; r < 3; r++) {
+            dwf[r] += weights[n] * w1[r] / (12 * h);
+            dwb[r] += weights[n] * w2[r] / (12 * h);
+            for (int k = 0; k < 3; k++) {
+                dWf[r][k] += weights[n] * Wf_n[r][k] / (12 * h);
+                dWb[r][k] += weights[n] * Wb_n[r][k] / (12 * h);
+            }
+        }
+    }
+    for (int r = 0; r < 3; r++) {
+        check_close(seq->name, "alpha_fixed = d(omega_fixed)/dt", af[r], dwf[r], 1e-7 * scale_a);
+        check_close(seq->name, "alpha_body = d(omega_body)/dt", ab[r], dwb[r], 1e-7 * scale_a);
+        for (int k = 0; k < 3; k++) {
+            check_close(seq->name, "W_fixed_dot = d(W_fixed)/dt", Wfd[r][k], dWf[r][k], 1e-7 * scale_w);
+            check_close(seq->name, "W_body_dot = d(W_body)/dt", Wbd[r][k], dWb[r][k], 1e-7 * scale_w);
+        }
+    }
+}
+
+/* Forward then inverse gives back theta_dot and theta_ddot, to the conditioning 1/distance. */
+static void check_round_trip(const ak_sequence *seq, const double theta[3], const double td[3],
+                             const double tdd[3]) {
+    double wf[3], wb[3], af[3], ab[3];
+    ak_general_angular_kinematics(seq, theta, td, tdd, wf, wb, af, ab);
+    const double d = ak_singularity_distance(seq, theta);
+    const double scale_w = fabs(td[0]) + fabs(td[1]) + fabs(td[2]);
+    const double scale_a = fabs(tdd[0]) + fabs(tdd[1]) + fabs(tdd[2]) + scale_w * scale_w;
+    for (int f = 0; f < 2; f++) {
+        double td_back[3], tdd_back[3], af_back[3], ab_back[3], distance;
+        const ak_rates_status status = ak_general_euler_rates(
+            seq, f == 0 ? AK_FRAME_FIXED : AK_FRAME_BODY, theta, f == 0 ? wf : wb, f == 0 ? af : ab,
+            1e-300, td_back, tdd_back, af_back, ab_back, &distance);
+        check(seq->name, "round trip: status OK", status == AK_RATES_OK);
+        check_close(seq->name, "round trip: distance", distance, d, 0.0);
+        if (status != AK_RATES_OK) {
+            continue;
+        }
+        for (int k = 0; k < 3; k++) {
+            check_close(seq->name, "round trip: theta_dot", td_back[k], td[k], 1e-14 * scale_w / d);
+            check_close(seq->name, "round trip: theta_ddot", tdd_back[k], tdd[k],
+                        1e-14 * scale_a / (d * d));
+            check_close(seq->name, "round trip: alpha_fixed", af_back[k], af[k], 1e-14 * scale_a);
+            check_close(seq->name, "round trip: alpha_body", ab_back[k], ab[k], 1e-14 * scale_a);
+        }
+    }
+}
+
+static void check_singularity(const ak_sequence *seq) {
+    const double pi = 3.141592653589793;
+    const double singular[2] = {seq->proper_euler ? 0.0 : -pi / 2, seq->proper_euler ? pi : pi / 2};
+    const double omega[3] = {0.3, -0.2, 0.1}, omega_dot[3] = {1.0, 2.0, 3.0};
+    for (int n = 0; n < 2; n++) {
+        for (int wrap = -2; wrap <= 2; wrap++) {
+            const double theta[3] = {0.4, singular[n] + 2 * pi * wrap, -1.1};
+            double td[3] = {7, 7, 7}, tdd[3] = {7, 7, 7}, af[3] = {7, 7, 7}, ab[3] = {7, 7, 7}, d;
+            for (int f = 0; f < 2; f++) {
+                const ak_rates_status status = ak_general_euler_rates(
+                    seq, f ? AK_FRAME_BODY : AK_FRAME_FIXED, theta, omega, omega_dot, 1e-6, td, tdd, af, ab, &d);
+                check(seq->name, "at the singular angle: AK_RATES_SINGULAR", status == AK_RATES_SINGULAR);
+                check(seq->name, "at the singular angle: distance below 1e-14", d < 1e-14);
+                check(seq->name, "at the singular angle: outputs untouched",
+                      td[0] == 7 && td[1] == 7 && td[2] == 7 && tdd[0] == 7 && tdd[2] == 7 &&
+                          af[1] == 7 && ab[1] == 7);
+            }
+        }
+        /* Inside the tolerance: computed, flagged. */
+        const double theta[3] = {0.4, singular[n] + 1e-8, -1.1};
+        double td[3], tdd[3], af[3], ab[3], d;
+        ak_rates_status status = ak_general_euler_rates(seq, AK_FRAME_FIXED, theta, omega, omega_dot,
+                                                        1e-6, td, tdd, af, ab, &d);
+        check(seq->name, "1e-8 from singular: AK_RATES_NEAR_SINGULAR", status == AK_RATES_NEAR_SINGULAR);
+        check_close(seq->name, "1e-8 from singular: distance", d, 1e-8, 1e-15);
+        status = ak_general_euler_rates(seq, AK_FRAME_FIXED, theta, omega, omega_dot, 1e-9, td, tdd,
+                                        af, ab, &d);
+        check(seq->name, "1e-8 from singular, tolerance 1e-9: AK_RATES_OK", status == AK_RATES_OK);
+        /* Far from the singularity but the result overflows: refused, nothing written. */
+        const double far[3] = {0.4, singular[n] + 1e-3, -1.1}, huge[3] = {1e300, -1e300, 1e300};
+        td[0] = 7;
+        status = ak_general_euler_rates(seq, AK_FRAME_BODY, far, huge, omega_dot, 1e-6, td, tdd,
+                                        af, ab, &d);
+        check(seq->name, "overflow: AK_RATES_OVERFLOW", status == AK_RATES_OVERFLOW);
+        check(seq->name, "overflow: outputs untouched", td[0] == 7);
+    }
+}
+
+static void check_table(void) {
+    for (int i = 0; i < AK_SEQUENCE_COUNT; i++) {
+        const ak_sequence *seq = &AK_SEQUENCES[i];
+        char name[16];
+        snprintf(name, sizeof name, "%s%d%d%d", seq->kind == AK_BODY_FIXED ? "body" : "space",
+                 seq->axes[0], seq->axes[1], seq->axes[2]);
+        check(seq->name, "name says kind and axes", strcmp(name, seq->name) == 0);
+        check(seq->name, "index of name", ak_sequence_index(seq->name) == i);
+        check(seq->name, "consecutive axes differ",
+              seq->axes[0] != seq->axes[1] && seq->axes[1] != seq->axes[2]);
+        check(seq->name, "proper_euler flag", seq->proper_euler == (seq->axes[0] == seq->axes[2]));
+        check(seq->name, "body-fixed first, then space-fixed", (i < 12) == (seq->kind == AK_BODY_FIXED));
+        check(seq->name, "Tait-Bryan first in each half", (i % 12 < 6) == !seq->proper_euler);
+    }
+    check("table", "default is body123", strcmp(AK_SEQUENCES[AK_SEQUENCE_DEFAULT].name, "body123") == 0);
+    check("table", "unknown name", ak_sequence_index("body111") == -1 && ak_sequence_index(NULL) == -1);
+}
+
+/* The general core for body123 against the hand-written 1-2-3 core; worst scaled difference. */
+static double worst_body123_difference = 0.0;
+
+static void check_body123_matches_core(const double theta[3], const double td[3], const double tdd[3]) {
+    const ak_sequence *seq = &AK_SEQUENCES[ak_sequence_index("body123")];
+    double g[4][3], h[4][3], Rg[3][3], Rh[3][3];
+    const double scale_w = fabs(td[0]) + fabs(td[1]) + fabs(td[2]);
+    const double scale_a = fabs(tdd[0]) + fabs(tdd[1]) + fabs(tdd[2]) + scale_w * scale_w;
+    ak_general_angular_kinematics(seq, theta, td, tdd, g[0], g[1], g[2], g[3]);
+    ak_angular_kinematics_123(theta, td, tdd, h[0], h[1], h[2], h[3]);
+    for (int n = 0; n < 4; n++) {
+        for (int k = 0; k < 3; k++) {
+            const double scale = n < 2 ? scale_w : scale_a;
+            check_close("body123", "general core = ak_angular_kinematics_123", g[n][k], h[n][k],
+                        1.5e-15 * scale);
+            if (fabs(g[n][k] - h[n][k]) / scale > worst_body123_difference) {
+                worst_body123_difference = fabs(g[n][k] - h[n][k]) / scale;
+            }
+        }
+    }
+    ak_general_rotation_matrix(seq, theta, Rg);
+    ak_rotation_matrix_123(theta, Rh);
+    for (int r = 0; r < 3; r++) {
+        for (int k = 0; k < 3; k++) {
+            check_close("body123", "general R = ak_rotation_matrix_123", Rg[r][k], Rh[r][k], 1e-15);
+        }
+    }
+}
+
+int main(void) {
+    srand(20261121);
+    check_table();
+    for (int i = 0; i < AK_SEQUENCE_COUNT; i++) {
+        const ak_sequence *seq = &AK_SEQUENCES[i];
+        const double singular = seq->proper_euler ? 0.0 : 1.5707963267948966;
+        for (int n = 0; n < 300; n++) {
+            double theta[3], td[3], tdd[3];
+            for (int k = 0; k < 3; k++) {
+                theta[k] = random_in(-4.0, 4.0);
+                td[k] = random_rate();
+                tdd[k] = random_rate();
+            }
+            if (n % 3 == 1) {
+                theta[1] = singular + random_in(-1e-6, 1e-6); /* near the singular configuration */
+            } else if (n % 3 == 2) {
+                theta[1] = singular;                          /* at it */
+            }
+            check_rotation(seq, theta, td);
+            check_velocity(seq, theta, td, tdd);
+            if (n % 3 == 0 && ak_singularity_distance(seq, theta) > 1e-2) {
+                check_round_trip(seq, theta, td, tdd);
+            }
+        }
+        check_singularity(seq);
+    }
+    for (int n = 0; n < 2000; n++) {
+        double theta[3], td[3], tdd[3];
+        for (int k = 0; k < 3; k++) {
+            theta[k] = random_in(-10.0, 10.0);
+            td[k] = random_rate();
+            tdd[k] = random_rate();
+        }
+        check_body123_matches_core(theta, td, tdd);
+    }
+    printf("body123 general vs ak_angular_kinematics_123, 2000 states: worst scaled difference %.2e\n",
+           worst_body123_difference);
+    printf("%d checks, %d failures\n", checks, failures);
+    return failures == 0 ? 0 : 1;
+}

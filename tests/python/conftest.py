@@ -1,0 +1,209 @@
+"""Shared fixtures: the built FMU, its model description, and instances driven through fmpy with
+their log messages captured."""
+import ctypes
+import json
+import os
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from fmpy import extract, read_model_description
+from fmpy.fmi2 import (FMU2Model, FMU2Slave, calloc, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
+                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, free)
+from fmpy.logging import addLoggerProxy
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+# AK_FMU, AK_EULER_FMU: other builds of the FMUs to test (scripts/check_sanitizers.sh passes its
+# ASan builds).
+FMU_PATH = pathlib.Path(os.environ.get("AK_FMU", ROOT / "dist" / "AngularKinematics.fmu"))
+EULER_FMU_PATH = pathlib.Path(os.environ.get("AK_EULER_FMU", ROOT / "dist" / "EulerRates.fmu"))
+BUILD_DIR = ROOT / "build"
+sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
+sys.path.insert(0, str(ROOT))  # codegen: the project's facts and the model descriptions
+
+STATUS = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal", 5: "Pending"}
+FIGURES = pytest.StashKey[list]()
+
+
+def pytest_configure(config):
+    config.stash[FIGURES] = []
+
+
+def pytest_terminal_summary(terminalreporter, exitstatus, config):
+    figures = config.stash[FIGURES]
+    if figures:
+        terminalreporter.section("measured figures")
+        for line in figures:
+            terminalreporter.write_line(line)
+
+
+@pytest.fixture
+def report(request):
+    """Records a measured figure, printed at the end of the run."""
+    def record(line):
+        request.config.stash[FIGURES].append(f"{request.node.nodeid}: {line}")
+    return record
+
+
+@pytest.fixture(scope="session")
+def root():
+    return ROOT
+
+
+@pytest.fixture(scope="session")
+def fmu_path():
+    assert FMU_PATH.is_file(), f"{FMU_PATH} is missing: build it first (bash scripts/build.sh)"
+    return str(FMU_PATH)
+
+
+@pytest.fixture(scope="session")
+def model_description(fmu_path):
+    return read_model_description(fmu_path)
+
+
+@pytest.fixture(scope="session")
+def unzipdir(fmu_path, tmp_path_factory):
+    return extract(fmu_path, unzipdir=str(tmp_path_factory.mktemp("fmu")))
+
+
+def c_table_of(model):
+    """The variable table a model's binary is built from, printed by its model_info tool."""
+    tool = BUILD_DIR / f"model_info_{model}"
+    assert tool.is_file(), f"{tool} is missing: build it first (bash scripts/build.sh)"
+    return json.loads(subprocess.run([str(tool)], check=True, capture_output=True, text=True).stdout)
+
+
+@pytest.fixture(scope="session")
+def c_table():
+    return c_table_of("AngularKinematics")
+
+
+@pytest.fixture(scope="session")
+def euler_fmu_path():
+    assert EULER_FMU_PATH.is_file(), f"{EULER_FMU_PATH} is missing: build it first (bash scripts/build.sh)"
+    return str(EULER_FMU_PATH)
+
+
+@pytest.fixture(scope="session")
+def euler_model_description(euler_fmu_path):
+    return read_model_description(euler_fmu_path)
+
+
+@pytest.fixture(scope="session")
+def euler_unzipdir(euler_fmu_path, tmp_path_factory):
+    return extract(euler_fmu_path, unzipdir=str(tmp_path_factory.mktemp("euler_fmu")))
+
+
+class Instance:
+    """One FMU instance, created through fmpy's FMU2Slave (co-simulation) or FMU2Model (model
+    exchange) with a logger that keeps every message.
+
+    ``call`` invokes an FMI function and returns its status without raising, so that tests can
+    check the status of calls that are meant to fail.
+
+    fmpy's native logger proxy keeps one logger: the messages of every instance reach the most
+    recently created instance's ``messages``. A test that checks messages creates the instance it
+    checks last."""
+
+    def __init__(self, unzipdir, model_description, name="instance", logging_on=False,
+                 fmi_type="CoSimulation"):
+        self.model_description = model_description
+        self.vr = {v.name: v.valueReference for v in model_description.modelVariables}
+        self.messages = []  # (status name, category, message)
+        self.callbacks = fmi2CallbackFunctions()
+        self._logger = fmi2CallbackLoggerTYPE(self._log)
+        self.callbacks.logger = self._logger
+        self.callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        self.callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        addLoggerProxy(ctypes.byref(self.callbacks))
+        fmu_class, interface = ((FMU2Model, model_description.modelExchange)
+                                if fmi_type == "ModelExchange"
+                                else (FMU2Slave, model_description.coSimulation))
+        self.fmu = fmu_class(guid=model_description.guid, unzipDirectory=unzipdir,
+                             modelIdentifier=interface.modelIdentifier, instanceName=name)
+        self.fmu.instantiate(callbacks=self.callbacks, loggingOn=logging_on)
+        self.component = self.fmu.component
+
+    def _log(self, env, instance_name, status, category, message):
+        self.messages.append((STATUS.get(status, str(status)), category.decode(), message.decode()))
+
+    def call(self, function, *args):
+        """The raw status of an FMI function called on this instance."""
+        return self.fmu._functions[function](self.component, *args)
+
+    def errors(self):
+        return [m for s, c, m in self.messages if s == "Error"]
+
+    def set(self, values):
+        """fmi2SetReal by variable name; returns the status."""
+        names = list(values)
+        vr = (ctypes.c_uint * len(names))(*[self.vr[n] for n in names])
+        array = (ctypes.c_double * len(names))(*[values[n] for n in names])
+        return self.call("fmi2SetReal", vr, len(names), array)
+
+    def set_integer(self, values):
+        """fmi2SetInteger by variable name; returns the status."""
+        names = list(values)
+        vr = (ctypes.c_uint * len(names))(*[self.vr[n] for n in names])
+        array = (ctypes.c_int * len(names))(*[values[n] for n in names])
+        return self.call("fmi2SetInteger", vr, len(names), array)
+
+    def get_integer(self, names):
+        return list(self.fmu.getInteger([self.vr[n] for n in names]))
+
+    def get(self, names):
+        """fmi2GetReal by variable name; returns the values as a numpy array (raises on error)."""
+        return np.array(self.fmu.getReal([self.vr[n] for n in names]))
+
+    def initialize(self, start_time=0.0, stop_time=None, inputs=None, parameters=None):
+        """parameters: {name: value}, Integer ones (Enumerations) set with fmi2SetInteger."""
+        self.fmu.setupExperiment(startTime=start_time, stopTime=stop_time)
+        self.fmu.enterInitializationMode()
+        types = {v.name: v.type for v in self.model_description.modelVariables}
+        for name, value in (parameters or {}).items():
+            if types[name] == "Real":
+                assert self.set({name: value}) == 0
+            else:
+                assert self.set_integer({name: value}) == 0
+        if inputs:
+            assert self.set(inputs) == 0
+        self.fmu.exitInitializationMode()
+
+    def free(self):
+        if self.component is not None:
+            self.fmu.freeInstance()
+            self.component = None
+
+
+@pytest.fixture
+def make_instance(unzipdir, model_description):
+    """Creates instances, all freed at the end of the test."""
+    created = []
+
+    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
+        instance = Instance(unzipdir, model_description, name=name, logging_on=logging_on,
+                            fmi_type=fmi_type)
+        created.append(instance)
+        return instance
+
+    yield make
+    for instance in created:
+        instance.free()
+
+
+@pytest.fixture
+def make_euler_instance(euler_unzipdir, euler_model_description):
+    """Creates EulerRates instances, all freed at the end of the test."""
+    created = []
+
+    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
+        instance = Instance(euler_unzipdir, euler_model_description, name=name,
+                            logging_on=logging_on, fmi_type=fmi_type)
+        created.append(instance)
+        return instance
+
+    yield make
+    for instance in created:
+        instance.free()

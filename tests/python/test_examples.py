@@ -1,0 +1,113 @@
+"""The demo (CSV, plot, progress bar) and the examples: the CI simulation check and a bounded Dask
+sweep, each shown to pass and shown to fail when it should."""
+import csv
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import reference
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+PYTHON = sys.executable
+CI_CHECK = ROOT / "examples" / "ci_check.py"
+STORED_REFERENCE = ROOT / "examples" / "reference" / "tumbling_body_reference.csv"
+
+
+def run(*arguments, timeout=300):
+    return subprocess.run([PYTHON, *map(str, arguments)], capture_output=True, text=True,
+                          timeout=timeout, cwd=ROOT)
+
+
+def test_demo_writes_csv_and_plot(fmu_path, tmp_path):
+    output = tmp_path / "demo.csv"
+    done = run(ROOT / "demo" / "tumbling_body.py", "--fmu", fmu_path, "--stop-time", "2",
+               "--output", output)
+    assert done.returncode == 0, done.stderr
+    with output.open() as file:
+        rows = list(csv.reader(file))
+    assert len(rows) == 1 + 201
+    assert {"omega_fixed[1]", "alpha_body[3]", "theta[2]"} <= set(h.strip('"') for h in rows[0])
+    picture = output.with_suffix(".png").read_bytes()
+    assert picture.startswith(b"\x89PNG\r\n\x1a\n")
+    width, height = int.from_bytes(picture[16:20], "big"), int.from_bytes(picture[20:24], "big")
+    assert (width, height) == (900, 585)
+
+
+def test_demo_shows_progress_on_runs_past_the_delay(fmu_path, capsys, monkeypatch):
+    import tumbling_body
+    monkeypatch.setattr(tumbling_body, "PROGRESS_DELAY", 0.0)
+    tumbling_body.simulate(fmu_path, 1.0, 0.01)
+    assert "100/100" in capsys.readouterr().err
+    monkeypatch.setattr(tumbling_body, "PROGRESS_DELAY", 60.0)
+    tumbling_body.simulate(fmu_path, 1.0, 0.01)
+    assert capsys.readouterr().err == ""
+
+
+def test_stored_reference_agrees_with_the_sympy_reference(report):
+    names = reference.INPUT_NAMES + reference.OUTPUT_NAMES
+    table = np.loadtxt(STORED_REFERENCE, delimiter=",", skiprows=1)
+    header = STORED_REFERENCE.read_text().splitlines()[0].split(",")
+    assert header == ["time"] + names
+    worst = 0.0
+    for row in table[::4]:
+        inputs, outputs = row[1:10], row[10:]
+        scale_w = np.abs(inputs[3:6]).sum()
+        scale = np.array([scale_w] * 6 + [np.abs(inputs[6:9]).sum() + scale_w ** 2] * 6)
+        worst = max(worst, (np.abs(outputs - reference.outputs(inputs)) / scale).max())
+    report(f"{len(table[::4])} rows of the stored CI reference: worst scaled error {worst:.1e}")
+    assert worst <= 1e-14
+
+
+def test_ci_check_passes_on_the_stored_reference(fmu_path):
+    done = run(CI_CHECK, "--fmu", fmu_path)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "PASSED" in done.stdout and "REGRESSION" not in done.stdout
+
+
+def tampered(tmp_path, column, row, relative):
+    lines = STORED_REFERENCE.read_text().splitlines()
+    k = lines[0].split(",").index(column)
+    values = lines[1 + row].split(",")
+    values[k] = repr(float(values[k]) * (1 + relative))
+    lines[1 + row] = ",".join(values)
+    path = tmp_path / f"tampered_{relative:g}.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_ci_check_fails_on_a_regression(fmu_path, tmp_path):
+    done = run(CI_CHECK, "--fmu", fmu_path, "--reference", tampered(tmp_path, "alpha_body[2]", 100, 1e-9))
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert [line.split()[1] for line in done.stdout.splitlines() if "REGRESSION" in line] == ["alpha_body[2]"]
+    assert "FAILED" in done.stdout
+
+
+def test_ci_check_tolerates_last_bit_differences(fmu_path, tmp_path):
+    done = run(CI_CHECK, "--fmu", fmu_path, "--reference", tampered(tmp_path, "omega_fixed[1]", 50, 1e-14))
+    assert done.returncode == 0, done.stdout
+
+
+def test_ci_check_refuses_another_trajectory(fmu_path, tmp_path):
+    done = run(CI_CHECK, "--fmu", fmu_path, "--reference", tampered(tmp_path, "theta[1]", 10, 1e-6))
+    assert done.returncode == 2, done.stdout
+
+
+@pytest.mark.parametrize("tolerance, status", [("1e-14", 0), ("1e-17", 1)])
+def test_bounded_dask_sweep(fmu_path, tmp_path, tolerance, status, report):
+    """8 simulations on a local cluster of 2 worker processes; with a tolerance below the FMU's
+    rounding errors the same sweep must fail."""
+    output = tmp_path / "sweep.csv"
+    done = run(ROOT / "examples" / "dask_sweep.py", "--fmu", fmu_path, "--count", "8",
+               "--stop-time", "1", "--tolerance", tolerance, "--output", output, "--no-progress")
+    assert done.returncode == status, done.stdout + done.stderr[-3000:]
+    with output.open() as file:
+        cases = list(csv.DictReader(file))
+    assert [int(c["case"]) for c in cases] == list(range(8))
+    assert all(int(c["rows"]) == 101 for c in cases)
+    if status == 0:
+        report(done.stdout.strip().replace("\n", "; "))
+    else:
+        assert "FAILED case" in done.stdout
