@@ -32,7 +32,7 @@ def xml_escape(text):
 
 
 def constant_prefix(model):
-    return {"AngularKinematics": "AK", "EulerRates": "ER"}.get(model.name, model.name.upper())
+    return model.c_prefix
 
 
 # --- C ------------------------------------------------------------------------------------------

@@ -33,6 +33,7 @@ class Scalar:
 @dataclass
 class Model:
     name: str
+    c_prefix: str          # of the generated C names
     guid: str
     description: str
     model_description: pathlib.Path
@@ -108,7 +109,7 @@ def load(name):
     _check(name, scalars)
     folder = f"models/{name}"
     return Model(
-        name=d.NAME, guid=d.GUID, description=d.DESCRIPTION,
+        name=d.NAME, c_prefix=getattr(d, "C_PREFIX", d.NAME.upper()), guid=d.GUID, description=d.DESCRIPTION,
         model_description=ROOT / d.MODEL_DESCRIPTION,
         sources=[f"{folder}/{source}" for source in d.SOURCES] + [f"{folder}/{name}_variables.c"],
         headers=[f"{folder}/{name}_variables.h"],

@@ -2,6 +2,7 @@
 rules: value references are forever, arrays take consecutive ones, `depends` per element)."""
 
 NAME = "EulerRates"
+C_PREFIX = "ER"  # of the generated C names: ER_VR_..., ER_VARIABLES
 GUID = "{6f0d3c8e-2b1a-4e55-9a53-2f4c1d7e8b90}"
 DESCRIPTION = ("Kinematic differential equations of any of the 24 rotation sequences: the first "
                "and second time derivatives of the angles from the angular velocity and its "
