@@ -10,7 +10,7 @@ from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
 from conftest import ROOT, c_table_of
-from reference_sequences import KINEMATICS_INPUTS, KINEMATICS_OUTPUTS, RATES_INPUTS, RATES_OUTPUTS
+from reference import KINEMATICS_INPUTS, KINEMATICS_OUTPUTS, RATES_INPUTS, RATES_OUTPUTS
 from codegen.project import SEQUENCES, sequence_description
 
 DISPLAY_UNITS = {"rad": "deg", "rad/s": "deg/s", "rad/s2": "deg/s2"}
