@@ -21,6 +21,17 @@ sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test 
 sys.path.insert(0, str(ROOT))  # codegen: the project's facts and the model descriptions
 from codegen import project  # noqa: E402
 
+# The sequences a quick run (pytest -m "not slow") checks: one body-fixed Tait-Bryan, one
+# space-fixed proper Euler; the other 22 cases of each per-sequence test are marked slow.
+QUICK_SEQUENCES = ("body123", "space313")
+
+
+def sequence_cases():
+    """codegen.project.SEQUENCES as pytest parameters, all but QUICK_SEQUENCES marked slow."""
+    return [pytest.param(name, marks=() if name in QUICK_SEQUENCES else pytest.mark.slow)
+            for name in project.SEQUENCES]
+
+
 # AK_FMU, AK_EULER_FMU: other builds of the FMUs to test (scripts/check_sanitizers.sh passes its
 # ASan builds); any other model is tested as dist/<Model>.fmu.
 FMU_ENVIRONMENT = {"AngularKinematics": "AK_FMU", "EulerRates": "AK_EULER_FMU"}

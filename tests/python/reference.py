@@ -74,10 +74,11 @@ def _expressions(name):
 
 @functools.lru_cache(maxsize=None)
 def _functions(name):
+    """The expressions as mpmath functions, common subexpressions computed once (cse: faster)."""
     symbols, kinematics, rotation, partial_terms = _expressions(name)
-    return (sp.lambdify(symbols, kinematics, modules="mpmath"),
-            sp.lambdify(symbols[:3], rotation, modules="mpmath"),
-            sp.lambdify(symbols[:6], partial_terms, modules="mpmath"))
+    return (sp.lambdify(symbols, kinematics, modules="mpmath", cse=True),
+            sp.lambdify(symbols[:3], rotation, modules="mpmath", cse=True),
+            sp.lambdify(symbols[:6], partial_terms, modules="mpmath", cse=True))
 
 
 def _mp(values):
