@@ -8,7 +8,6 @@ import math
 import re
 
 import numpy as np
-import pytest
 
 from conftest import bad_input_rows, project
 
