@@ -145,7 +145,7 @@ def test_model_structure_is_the_c_table_dependencies(model):
 
 def documented_unions(heading):
     """{output: set of inputs} of a union table of docs/sequences.md (made from the sympy reference
-    by tests/sequence_dependencies.py)."""
+    by tests/python/sequence_dependencies.py)."""
     text = (ROOT / "docs" / "sequences.md").read_text()
     section = text[text.index(heading):].split("\n\n")[1]
     unions = {}
