@@ -239,12 +239,6 @@ static double chain_determinant(const chain *ch) {
     return (ch->axis[1] == NEXT[ch->axis[0]]) ? ch->c[1] : -ch->c[1];
 }
 
-double ak_singularity_distance(const ak_sequence *sequence, const double theta[3]) {
-    chain ch;
-    make_chain(sequence, theta, &ch);
-    return fabs(chain_determinant(&ch));
-}
-
 static double dot(const double a[3], const double b[3]) {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }

@@ -105,9 +105,6 @@ void ak_general_partials(const ak_sequence *sequence, const double theta[3],
                          const double theta_dot[3], double W_fixed[3][3], double W_body[3][3],
                          double W_fixed_dot[3][3], double W_body_dot[3][3]);
 
-/* |det W| (section 4). */
-double ak_singularity_distance(const ak_sequence *sequence, const double theta[3]);
-
 /* Inverse map (section 6). omega and omega_dot are in the components of `frame`. On AK_RATES_OK
  * and AK_RATES_NEAR_SINGULAR writes theta_dot, theta_ddot, and alpha in both sets of components
  * (the input itself in its own frame, rotated by R in the other). *distance is always written. */

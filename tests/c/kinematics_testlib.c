@@ -45,6 +45,16 @@ AKT_EXPORT int akt_angular_kinematics(int index, int count, const double *inputs
     return 0;
 }
 
+/* The singularity distance |det W| as the FMUs get it: from the inverse map, which always
+ * writes it. */
+static double singularity_distance(const ak_sequence *seq, const double theta[3]) {
+    const double zero[3] = {0.0, 0.0, 0.0};
+    double theta_dot[3], theta_ddot[3], alpha_fixed[3], alpha_body[3], distance;
+    (void)ak_general_euler_rates(seq, AK_FRAME_FIXED, theta, zero, zero, 0.0, theta_dot,
+                                 theta_ddot, alpha_fixed, alpha_body, &distance);
+    return distance;
+}
+
 /* out: R row-major (9), q scalar first (4), W_fixed, W_body, W_fixed_dot, W_body_dot row-major
  * (4 x 9), singularity distance (1): 50 values per state of 6 inputs theta, theta_dot. */
 AKT_EXPORT int akt_rotation_terms(int index, int count, const double *inputs, double *out) {
@@ -59,7 +69,7 @@ AKT_EXPORT int akt_rotation_terms(int index, int count, const double *inputs, do
         ak_general_quaternion(seq, in, o + 9);
         ak_general_partials(seq, in, in + 3, (double (*)[3])(o + 13), (double (*)[3])(o + 22),
                             (double (*)[3])(o + 31), (double (*)[3])(o + 40));
-        o[49] = ak_singularity_distance(seq, in);
+        o[49] = singularity_distance(seq, in);
     }
     return 0;
 }

@@ -108,6 +108,16 @@ static double det3(double M[3][3]) {
            M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
 }
 
+/* The singularity distance |det W| as the FMUs get it: from the inverse map, which always
+ * writes it. */
+static double singularity_distance(const ak_sequence *seq, const double theta[3]) {
+    const double zero[3] = {0.0, 0.0, 0.0};
+    double theta_dot[3], theta_ddot[3], alpha_fixed[3], alpha_body[3], distance;
+    (void)ak_general_euler_rates(seq, AK_FRAME_FIXED, theta, zero, zero, 0.0, theta_dot,
+                                 theta_ddot, alpha_fixed, alpha_body, &distance);
+    return distance;
+}
+
 static void check_rotation(const ak_sequence *seq, const double theta[3], const double td[3]) {
     double R_ref[3][3], Rdot[3][3], R[3][3], q[4];
     reference_rotation(seq, theta, td, R_ref, Rdot);
@@ -181,7 +191,7 @@ static void check_velocity(const ak_sequence *seq, const double theta[3], const 
             check_close(seq->name, "W_body = R^T W_fixed", Wb[r][k], rotated_column, 1e-15);
         }
     }
-    const double d = ak_singularity_distance(seq, theta);
+    const double d = singularity_distance(seq, theta);
     const double expected_d = seq->proper_euler ? fabs(sin(theta[1])) : fabs(cos(theta[1]));
     check_close(seq->name, "distance = |cos theta2| or |sin theta2|", d, expected_d, 0.0);
     check_close(seq->name, "|det W_fixed| = distance", fabs(det3(Wf)), d, 1e-15);
@@ -230,7 +240,7 @@ static void check_round_trip(const ak_sequence *seq, const double theta[3], cons
                              const double tdd[3]) {
     double wf[3], wb[3], af[3], ab[3];
     ak_general_angular_kinematics(seq, theta, td, tdd, wf, wb, af, ab);
-    const double d = ak_singularity_distance(seq, theta);
+    const double d = singularity_distance(seq, theta);
     const double scale_w = fabs(td[0]) + fabs(td[1]) + fabs(td[2]);
     const double scale_a = fabs(tdd[0]) + fabs(tdd[1]) + fabs(tdd[2]) + scale_w * scale_w;
     for (int f = 0; f < 2; f++) {
@@ -358,7 +368,7 @@ int main(void) {
             }
             check_rotation(seq, theta, td);
             check_velocity(seq, theta, td, tdd);
-            if (n % 3 == 0 && ak_singularity_distance(seq, theta) > 1e-2) {
+            if (n % 3 == 0 && singularity_distance(seq, theta) > 1e-2) {
                 check_round_trip(seq, theta, td, tdd);
             }
         }

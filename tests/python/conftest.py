@@ -1,6 +1,7 @@
 """Shared fixtures: the built FMU, its model description, and instances driven through fmpy with
 their log messages captured."""
 import ctypes
+import functools
 import json
 import os
 import pathlib
@@ -15,13 +16,34 @@ from fmpy.fmi2 import (FMU2Model, FMU2Slave, calloc, fmi2CallbackAllocateMemoryT
 from fmpy.logging import addLoggerProxy
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-# AK_FMU, AK_EULER_FMU: other builds of the FMUs to test (scripts/check_sanitizers.sh passes its
-# ASan builds).
-FMU_PATH = pathlib.Path(os.environ.get("AK_FMU", ROOT / "dist" / "AngularKinematics.fmu"))
-EULER_FMU_PATH = pathlib.Path(os.environ.get("AK_EULER_FMU", ROOT / "dist" / "EulerRates.fmu"))
 BUILD_DIR = ROOT / "build"
 sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
 sys.path.insert(0, str(ROOT))  # codegen: the project's facts and the model descriptions
+from codegen import project  # noqa: E402
+
+# The sequences a quick run (pytest -m "not slow") checks: one body-fixed Tait-Bryan, one
+# space-fixed proper Euler; the other 22 cases of each per-sequence test are marked slow.
+QUICK_SEQUENCES = ("body123", "space313")
+
+
+def sequence_cases():
+    """codegen.project.SEQUENCES as pytest parameters, all but QUICK_SEQUENCES marked slow."""
+    return [pytest.param(name, marks=() if name in QUICK_SEQUENCES else pytest.mark.slow)
+            for name in project.SEQUENCES]
+
+
+# AK_FMU, AK_EULER_FMU: other builds of the FMUs to test (scripts/check_sanitizers.sh passes its
+# ASan builds); any other model is tested as dist/<Model>.fmu.
+FMU_ENVIRONMENT = {"AngularKinematics": "AK_FMU", "EulerRates": "AK_EULER_FMU"}
+
+
+def fmu_path_of(model):
+    default = ROOT / "dist" / f"{model}.fmu"
+    return pathlib.Path(os.environ.get(FMU_ENVIRONMENT.get(model, ""), default))
+
+
+FMU_PATH = fmu_path_of("AngularKinematics")
+EULER_FMU_PATH = fmu_path_of("EulerRates")
 
 STATUS = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal", 5: "Pending"}
 FIGURES = pytest.StashKey[list]()
@@ -75,9 +97,82 @@ def c_table_of(model):
     return json.loads(subprocess.run([str(tool)], check=True, capture_output=True, text=True).stdout)
 
 
+def abuse_program(program, model):
+    """build/<program> for AngularKinematics, build/<program>_<Model> for the others
+    (cmake/abuse_tests.cmake)."""
+    return BUILD_DIR / (program if model == "AngularKinematics" else f"{program}_{model}")
+
+
+@functools.lru_cache(maxsize=None)
+def bad_input_rows(model):
+    """The bad-input table of the C code (tests/c/fmi2_bad_input_*.c), the one authority for
+    every bad-input message, as its driver proved and printed it: one dict per row with state,
+    call, status and message (None: nothing logged)."""
+    driver = abuse_program("test_fmi2_calls", model)
+    assert driver.is_file(), f"{driver} is missing: build it first (bash scripts/build.sh)"
+    run = subprocess.run([str(driver), "--table"], capture_output=True, text=True)
+    assert run.returncode == 0, f"{driver.name} failed:\n{run.stdout}\n{run.stderr}"
+    rows = []
+    for line in run.stdout.splitlines()[2:]:  # after the header and the rule
+        state, call, status, message = (cell.strip() for cell in line.strip("|").split(" | "))
+        rows.append(dict(line=line, state=state, call=call.strip("`"), status=status,
+                         message=None if message == "(nothing logged)" else message.strip("`")))
+    return rows
+
+
 @pytest.fixture(scope="session")
 def c_table():
     return c_table_of("AngularKinematics")
+
+
+# The inputs every bad-input and state-machine test starts from: the ones the C driver
+# (tests/c/test_fmi2_calls.c) initializes every instance with, value references 0 to 8.
+VALID_INPUTS = [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]
+
+
+class Model:
+    """One model as built: its FMU, fmpy's reading of its model description, the FMU unzipped and
+    the C variable table (names by causality in value-reference order)."""
+
+    def __init__(self, name, unzip_root):
+        self.name = name
+        path = fmu_path_of(name)
+        assert path.is_file(), f"{path} is missing: build it first (bash scripts/build.sh)"
+        self.fmu_path = str(path)
+        self.description = read_model_description(self.fmu_path)
+        self.unzipdir = extract(self.fmu_path, unzipdir=str(unzip_root))
+        self.c_table = c_table_of(name)
+        variables = self.c_table["variables"]
+        self.inputs = [v["name"] for v in variables if v["causality"] == "input"]
+        self.outputs = [v["name"] for v in variables if v["causality"] == "output"]
+        self.parameters = [v["name"] for v in variables if v["causality"] == "parameter"]
+        self.valid_inputs = dict(zip(self.inputs, VALID_INPUTS))
+        self.largest_vr = max(v["valueReference"] for v in variables)
+
+    def __repr__(self):
+        return self.name
+
+
+@pytest.fixture(scope="session", params=project.MODELS)
+def model(request, tmp_path_factory):
+    """Each model of codegen.project.MODELS in turn, for the concerns every model shares."""
+    return Model(request.param, tmp_path_factory.mktemp(request.param))
+
+
+@pytest.fixture
+def make_model_instance(model):
+    """Creates instances of the `model` under test, all freed at the end of the test."""
+    created = []
+
+    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
+        instance = Instance(model.unzipdir, model.description, name=name, logging_on=logging_on,
+                            fmi_type=fmi_type)
+        created.append(instance)
+        return instance
+
+    yield make
+    for instance in created:
+        instance.free()
 
 
 @pytest.fixture(scope="session")

@@ -1,14 +1,19 @@
 """Prints, as Markdown, which inputs each output depends on for every rotation sequence, and the
 union over sequences (and, for EulerRates, over both frames) that a static <ModelStructure> must
-list. Computed on the independent sympy reference (reference_sequences.dependencies); the core is
+list. Computed on the independent sympy reference (reference.dependencies); the core is
 checked against the same sets by test_sequences_core.py::test_dependencies_match_reference.
 
-    .venv/bin/python tests/sequence_dependencies.py      (about half a minute)
+    .venv/bin/python tests/python/sequence_dependencies.py      (about half a minute)
 """
+import pathlib
+import sys
+
 import numpy as np
 
-import reference_sequences as reference
-from test_sequences_core import SEQUENCES
+import reference
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2]))  # codegen, when run as a script
+from codegen.project import SEQUENCES  # noqa: E402
 
 
 def short(inputs, order):

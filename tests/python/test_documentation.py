@@ -1,5 +1,5 @@
-"""The documentation packaged in the FMU and README.md: generated from the same sources and up to
-date, with the variables, their units, the capabilities and the figures."""
+"""The documentation packaged in every model's FMU and README.md: generated from the same sources and
+up to date, with the variables of every model, their units, the capabilities and the figures."""
 import re
 import subprocess
 import sys
@@ -7,6 +7,9 @@ import zipfile
 from html.parser import HTMLParser
 
 import pytest
+from fmpy import read_model_description
+
+from conftest import fmu_path_of, project
 
 RENDER = ["scripts/render_docs.py", "--check"]
 
@@ -41,8 +44,9 @@ class Page(HTMLParser):
 
 
 @pytest.fixture(scope="module")
-def page(fmu_path):
-    with zipfile.ZipFile(fmu_path) as archive:
+def page(model):
+    """The page packaged in the model's FMU."""
+    with zipfile.ZipFile(model.fmu_path) as archive:
         parser = Page()
         parser.feed(archive.read("documentation/index.html").decode())
         return parser, set(archive.namelist())
@@ -54,13 +58,12 @@ def test_documentation_has_the_sections(page):
                                "EulerRates: the inverse map", "FMI behaviour", "Capabilities"]
 
 
-@pytest.mark.parametrize("which", ["AngularKinematics", "EulerRates"])
-def test_documentation_lists_every_variable_with_its_unit(which, page, model_description,
-                                                          euler_model_description):
-    """Both models' variables are in the page (AngularKinematics' table first)."""
+@pytest.mark.parametrize("which", project.MODELS)
+def test_documentation_lists_every_variable_with_its_unit(which, page):
+    """Every model's variables are in the page (AngularKinematics' table first)."""
     parser, _ = page
     cells = parser.cells
-    description = model_description if which == "AngularKinematics" else euler_model_description
+    description = read_model_description(str(fmu_path_of(which)))
     start = 0 if which == "AngularKinematics" else cells.index("omega[1..3]") - 7  # its theta row
     for variable in description.modelVariables:
         vector = re.fullmatch(r"(\w+)\[\d\]", variable.name)
@@ -78,7 +81,8 @@ def test_documentation_lists_every_variable_with_its_unit(which, page, model_des
             assert str(variable.valueReference) in references.split(", ")
 
 
-def test_documentation_states_the_capability_flags(page, model_description):
+def test_documentation_states_the_capability_flags(page, model):
+    model_description = model.description
     parser, _ = page
     cells = parser.cells
     # Columns in the order of modelDescription.xml: Model Exchange, then Co-Simulation.

@@ -95,6 +95,7 @@ def test_ci_check_refuses_another_trajectory(fmu_path, tmp_path):
     assert done.returncode == 2, done.stdout
 
 
+@pytest.mark.slow  # starts a Dask cluster
 @pytest.mark.parametrize("tolerance, status", [("1e-14", 0), ("1e-17", 1)])
 def test_bounded_dask_sweep(fmu_path, tmp_path, tolerance, status, report):
     """8 simulations on a local cluster of 2 worker processes; with a tolerance below the FMU's

@@ -1,6 +1,8 @@
 """FMU state: get, set, free, serialize, deserialize. The serialized form is self-contained (fixed
 little-endian layout, format version, GUID, CRC-32); corrupt, truncated and foreign bytes are
-refused with fmi2Error and a clear message, leaving the instance as it was."""
+refused with fmi2Error and a clear message, leaving the instance as it was. What every model shares
+runs for each model (the `model` fixture); the byte layout and its messages are checked on
+AngularKinematics."""
 import ctypes
 import struct
 import zlib
@@ -27,9 +29,15 @@ def set_derivatives(instance, derivatives):
     return instance.call("fmi2SetRealInputDerivatives", vr, len(names), order, value)
 
 
+def observable(instance):
+    """The names of every Real input and output of the instance's model."""
+    return [v.name for v in instance.model_description.modelVariables
+            if v.type == "Real" and v.causality in ("input", "output")]
+
+
 def snapshot(instance):
     """Everything observable of a co-simulation instance."""
-    return (instance.fmu.getRealStatus(2), tuple(instance.get(ALL)))
+    return (instance.fmu.getRealStatus(2), tuple(instance.get(observable(instance))))
 
 
 def stepping(instance, t, steps, h=0.05):
@@ -38,14 +46,18 @@ def stepping(instance, t, steps, h=0.05):
     for _ in range(steps):
         assert instance.call("fmi2DoStep", t, h, 1) == 0
         t += h
-        rows.append(instance.get(ALL))
+        rows.append(instance.get(observable(instance)))
     return np.array(rows)
 
 
-def running(make_instance, name="running"):
+def running(make_instance, name="running", model=None):
+    """An instance of AngularKinematics (or of model) stepped to t = 0.2, with inputs and three
+    input derivatives set."""
+    inputs = INPUTS if model is None else model.valid_inputs
+    names = list(inputs)
     instance = make_instance(name)
-    instance.initialize(inputs=INPUTS, stop_time=10.0)
-    set_derivatives(instance, {"theta[1]": 0.5, "theta_dot[2]": -1.0, "theta_ddot[3]": 2.0})
+    instance.initialize(inputs=inputs, stop_time=10.0)
+    set_derivatives(instance, {names[0]: 0.5, names[4]: -1.0, names[8]: 2.0})
     stepping(instance, 0.0, 4)
     return instance
 
@@ -56,12 +68,12 @@ def reseal(data):
     return bytes(data) + struct.pack("<I", zlib.crc32(data))
 
 
-def test_rollback_restores_time_values_and_input_derivatives(make_instance):
-    instance = running(make_instance)
+def test_rollback_restores_time_values_and_input_derivatives(model, make_model_instance):
+    instance = running(make_model_instance, model=model)
     before = snapshot(instance)
     state = instance.fmu.getFMUstate()
     future = stepping(instance, 0.2, 5)
-    instance.set(OTHER)  # also forgets the derivatives of every input
+    instance.set(dict(zip(model.inputs, OTHER.values())))  # also forgets every input derivative
     stepping(instance, 0.45, 2)
     instance.fmu.setFMUstate(state)
     assert snapshot(instance) == before
@@ -71,11 +83,12 @@ def test_rollback_restores_time_values_and_input_derivatives(make_instance):
     assert state.value is None
 
 
-def test_round_trip_across_two_instances(make_instance):
-    first = running(make_instance, "first")
+def test_round_trip_across_two_instances(model, make_model_instance):
+    first = running(make_model_instance, "first", model)
     data = first.fmu.serializeFMUstate(first.fmu.getFMUstate())
-    assert len(data) == SIZE
-    second = make_instance("second")  # just instantiated, never initialized
+    # The header, 8 bytes per variable and 16 (two input derivatives) per input, the CRC.
+    assert len(data) == 92 + 8 * len(model.c_table["variables"]) + 16 * len(model.inputs)
+    second = make_model_instance("second")  # just instantiated, never initialized
     state = second.fmu.deSerializeFMUstate(data)
     second.fmu.setFMUstate(state)
     assert snapshot(second) == snapshot(first)
@@ -103,8 +116,8 @@ def test_layout_is_the_documented_one(make_instance):
     assert struct.unpack_from("<I", data, 800)[0] == zlib.crc32(data[:800])  # IEEE CRC-32
 
 
-def test_state_objects_are_reused_when_passed_back(make_instance):
-    instance = running(make_instance)
+def test_state_objects_are_reused_when_passed_back(model, make_model_instance):
+    instance = running(make_model_instance, model=model)
     state = fmi2FMUstate()
     assert instance.call("fmi2GetFMUstate", ctypes.byref(state)) == 0
     first = state.value
@@ -120,8 +133,8 @@ def test_state_objects_are_reused_when_passed_back(make_instance):
     assert instance.errors() == []
 
 
-def test_setting_a_state_restores_the_state_machine(make_instance):
-    instance = running(make_instance)
+def test_setting_a_state_restores_the_state_machine(model, make_model_instance):
+    instance = running(make_model_instance, model=model)
     state = instance.fmu.getFMUstate()
     instance.fmu.terminate()
     assert instance.call("fmi2DoStep", 0.2, 0.1, 1) == 3
@@ -161,8 +174,8 @@ def try_deserialize(instance, data, state=None):
     return instance.call("fmi2DeSerializeFMUstate", buffer, len(data), ctypes.byref(state))
 
 
-def good_bytes(make_instance):
-    source = running(make_instance, "source")
+def good_bytes(make_instance, model=None):
+    source = running(make_instance, "source", model)
     return source.fmu.serializeFMUstate(source.fmu.getFMUstate())
 
 
@@ -234,29 +247,31 @@ def test_bad_bytes_are_refused_and_change_nothing(kind, make_instance):
     assert instance.call("fmi2DoStep", 0.25, 0.05, 1) == 0  # and goes on
 
 
-def test_every_single_bit_flip_is_detected(make_instance):
-    data = good_bytes(make_instance)
-    instance = make_instance("target")
+def test_every_single_bit_flip_is_detected(model, make_model_instance):
+    data = good_bytes(make_model_instance, model)
+    instance = make_model_instance("target")
     refused = 0
-    for byte in range(SIZE):
+    for byte in range(len(data)):
         for bit in range(8):
             bad = bytearray(data)
             bad[byte] ^= 1 << bit
             refused += try_deserialize(instance, bytes(bad)) == 3
-    assert refused == SIZE * 8
+    assert refused == len(data) * 8
     assert try_deserialize(instance, data) == 0
 
 
-def test_null_and_stray_arguments(make_instance):
-    instance = running(make_instance)
+def test_null_and_stray_arguments(model, make_model_instance):
+    instance = running(make_model_instance, model=model)
+    size_needed = len(instance.fmu.serializeFMUstate(instance.fmu.getFMUstate()))
     stray = ctypes.c_void_p(ctypes.addressof(ctypes.create_string_buffer(512)))
     size = ctypes.c_size_t()
     assert instance.call("fmi2GetFMUstate", None) == 3
     assert instance.call("fmi2SetFMUstate", None) == 3
     assert instance.call("fmi2SetFMUstate", stray) == 3
     assert instance.call("fmi2SerializedFMUstateSize", instance.fmu.getFMUstate(), None) == 3
-    small = ctypes.create_string_buffer(SIZE - 1)
-    assert instance.call("fmi2SerializeFMUstate", instance.fmu.getFMUstate(), small, SIZE - 1) == 3
+    small = ctypes.create_string_buffer(size_needed - 1)
+    assert instance.call("fmi2SerializeFMUstate", instance.fmu.getFMUstate(), small,
+                         size_needed - 1) == 3
     assert instance.call("fmi2FreeFMUstate", None) == 3
     assert instance.errors() == [
         "fmi2GetFMUstate: FMUstate is NULL",
@@ -265,17 +280,17 @@ def test_null_and_stray_arguments(make_instance):
         "fmi2SetFMUstate: FMUstate given is not an FMU state made by fmi2GetFMUstate or "
         "fmi2DeSerializeFMUstate of this FMU (or it was freed)",
         "fmi2SerializedFMUstateSize: size is NULL",
-        "fmi2SerializeFMUstate: size = 803 is too small; the state needs 804 bytes "
-        "(fmi2SerializedFMUstateSize)",
+        f"fmi2SerializeFMUstate: size = {size_needed - 1} is too small; the state needs "
+        f"{size_needed} bytes (fmi2SerializedFMUstateSize)",
         "fmi2FreeFMUstate: FMUstate is NULL",
     ]
     assert instance.call("fmi2SerializedFMUstateSize", instance.fmu.getFMUstate(),
                          ctypes.byref(size)) == 0
-    assert size.value == SIZE
+    assert size.value == size_needed
 
 
-def test_many_get_free_cycles(make_instance):
-    instance = running(make_instance)
+def test_many_get_free_cycles(model, make_model_instance):
+    instance = running(make_model_instance, model=model)
     for _ in range(500):
         state = instance.fmu.getFMUstate()
         copy = instance.fmu.deSerializeFMUstate(instance.fmu.serializeFMUstate(state))

@@ -6,11 +6,11 @@ import re
 import zipfile
 
 import pytest
-from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
 from conftest import ROOT, c_table_of
-from reference_sequences import KINEMATICS_INPUTS, KINEMATICS_OUTPUTS, RATES_INPUTS, RATES_OUTPUTS
+from reference import KINEMATICS_INPUTS, KINEMATICS_OUTPUTS, RATES_INPUTS, RATES_OUTPUTS
+from codegen import project
 from codegen.project import SEQUENCES, sequence_description
 
 DISPLAY_UNITS = {"rad": "deg", "rad/s": "deg/s", "rad/s2": "deg/s2"}
@@ -31,13 +31,16 @@ MODELS = {
 }
 
 
-@pytest.fixture(scope="module", params=list(MODELS))
-def model(request):
-    name = request.param
-    path = ROOT / "dist" / f"{name}.fmu"
-    assert path.is_file(), f"{path} is missing: build it first (bash scripts/build.sh)"
-    return dict(MODELS[name], name=name, fmu=str(path), description=read_model_description(str(path)),
-                table=c_table_of(name))
+@pytest.fixture(scope="module")
+def model(model):
+    """conftest's model (every model of codegen.project.MODELS), with its pins from MODELS."""
+    assert model.name in MODELS, f"pin {model.name}'s names and parameters in MODELS"
+    return dict(MODELS[model.name], name=model.name, fmu=model.fmu_path,
+                description=model.description, table=model.c_table)
+
+
+def test_every_model_is_pinned():
+    assert list(MODELS) == project.MODELS
 
 
 def test_fmpy_validation_finds_no_problem(model):
@@ -57,8 +60,8 @@ def test_fmu_archive_holds_description_binaries_documentation_sources(model, roo
     assert {n for n in names if n.startswith("sources/") and n.endswith(".c")} == \
         {f"sources/{c}" for c in listed}
     assert f"{name}_variables.c" in listed and "model.c" in listed
-    other = "EulerRates" if name == "AngularKinematics" else "AngularKinematics"
-    assert not any(other in n for n in names), f"{name}.fmu ships a file of {other}"
+    for other in set(project.MODELS) - {name}:
+        assert not any(other in n for n in names), f"{name}.fmu ships a file of {other}"
     assert icon == (root / "model.png").read_bytes()
     assert packaged == model["xml"].read_bytes(), "the packaged modelDescription.xml is not the repository's"
 
@@ -72,8 +75,9 @@ def test_identity_agrees_with_c_table(model):
     assert description.variableNamingConvention == "structured"
 
 
-def test_the_two_models_have_distinct_guids():
-    assert c_table_of("AngularKinematics")["guid"] != c_table_of("EulerRates")["guid"]
+def test_the_models_have_distinct_guids():
+    guids = [c_table_of(name)["guid"] for name in project.MODELS]
+    assert len(set(guids)) == len(guids)
 
 
 def test_variables_agree_with_c_table(model):
@@ -141,7 +145,7 @@ def test_model_structure_is_the_c_table_dependencies(model):
 
 def documented_unions(heading):
     """{output: set of inputs} of a union table of docs/sequences.md (made from the sympy reference
-    by tests/sequence_dependencies.py)."""
+    by tests/python/sequence_dependencies.py)."""
     text = (ROOT / "docs" / "sequences.md").read_text()
     section = text[text.index(heading):].split("\n\n")[1]
     unions = {}

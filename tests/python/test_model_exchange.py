@@ -1,5 +1,6 @@
 """Model exchange: the same FMU through fmi2ModelExchange, with zero continuous states and zero
-event indicators, gives the co-simulation outputs, and its state machine is enforced."""
+event indicators, gives the co-simulation outputs, and its state machine is enforced (for every
+model: the `model` fixture)."""
 import ctypes
 
 import numpy as np
@@ -139,8 +140,8 @@ ILLEGAL = [
 
 
 @pytest.mark.parametrize("state,function,args", ILLEGAL)
-def test_illegal_model_exchange_calls_are_refused(state, function, args, make_instance):
-    instance = make_instance(fmi_type="ModelExchange")
+def test_illegal_model_exchange_calls_are_refused(state, function, args, make_model_instance):
+    instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, state)
     assert instance.call(function, *args) == 3
     assert instance.errors() == [f"{function}: illegal call in state {state}"]
@@ -159,8 +160,9 @@ def test_illegal_model_exchange_calls_are_refused(state, function, args, make_in
     ("fmi2GetRealOutputDerivatives", (None, 0, None, None)),
     ("fmi2GetRealStatus", (2, ctypes.byref(ctypes.c_double()))),
 ])
-def test_co_simulation_functions_are_refused_on_model_exchange_instances(function, args, make_instance):
-    instance = make_instance(fmi_type="ModelExchange")
+def test_co_simulation_functions_are_refused_on_model_exchange_instances(function, args,
+                                                                          make_model_instance):
+    instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, "EventMode")
     status = call_other_interface(instance, function, *args)
     assert status == 3
@@ -174,8 +176,9 @@ def test_co_simulation_functions_are_refused_on_model_exchange_instances(functio
     ("fmi2GetDerivatives", (None, 0)),
     ("fmi2GetNominalsOfContinuousStates", (None, 0)),
 ])
-def test_model_exchange_functions_are_refused_on_co_simulation_instances(function, args, make_instance):
-    instance = make_instance()
+def test_model_exchange_functions_are_refused_on_co_simulation_instances(function, args,
+                                                                          make_model_instance):
+    instance = make_model_instance()
     instance.initialize()
     status = call_other_interface(instance, function, *args)
     assert status == 3
@@ -189,8 +192,8 @@ def test_model_exchange_functions_are_refused_on_co_simulation_instances(functio
     ("fmi2SetContinuousStates", "nx"), ("fmi2GetEventIndicators", "ni"),
     ("fmi2GetNominalsOfContinuousStates", "nx"),
 ])
-def test_state_and_indicator_arrays_must_be_empty(function, name, make_instance):
-    instance = make_instance(fmi_type="ModelExchange")
+def test_state_and_indicator_arrays_must_be_empty(function, name, make_model_instance):
+    instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, "ContinuousTimeMode")
     buffer = (ctypes.c_double * 1)()
     assert instance.call(function, buffer, 1) == 3
@@ -199,8 +202,8 @@ def test_state_and_indicator_arrays_must_be_empty(function, name, make_instance)
     assert instance.call(function, buffer, 0) == 0
 
 
-def test_null_and_non_finite_arguments(make_instance):
-    instance = make_instance(fmi_type="ModelExchange")
+def test_null_and_non_finite_arguments(make_model_instance):
+    instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, "EventMode")
     assert instance.call("fmi2NewDiscreteStates", None) == 3
     instance.fmu.enterContinuousTimeMode()

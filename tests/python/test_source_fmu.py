@@ -75,6 +75,7 @@ def test_fmpy_reads_the_source_files(model_description):
     assert configuration.sourceFileSets[0].sourceFiles == cmake_fmu_sources()
 
 
+@pytest.mark.slow  # compiles the FMU
 def test_copy_without_binaries_compiles_with_fmpy_and_simulates_identically(
         unzipdir, fmu_path, tmp_path, report):
     copy = tmp_path / "fmu"
@@ -100,6 +101,7 @@ def test_copy_without_binaries_compiles_with_fmpy_and_simulates_identically(
            "bit-identical to the packaged binary's")
 
 
+@pytest.mark.slow  # compiles the FMU
 def test_euler_rates_source_fmu_compiles_with_fmpy_and_simulates_identically(
         euler_unzipdir, euler_fmu_path, root, tmp_path):
     """The second model's source FMU: its own source list (EulerRates_variables.c, not the other

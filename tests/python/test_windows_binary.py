@@ -60,6 +60,7 @@ def wine_environment():
                 WINEDLLOVERRIDES="mscoree,mshtml=")
 
 
+@pytest.mark.slow  # wine starts
 def test_core_unit_tests_pass_on_windows():
     done = subprocess.run([wine(), str(WIN64_BUILD / "test_kinematics.exe")], env=wine_environment(),
                           capture_output=True, text=True, timeout=300)
@@ -86,6 +87,7 @@ def driver_rows(output):
     return rows[:, 1:]
 
 
+@pytest.mark.slow  # wine starts
 def test_dll_under_wine_computes_what_the_linux_binary_computes(dll, model, report):
     so = model[1] / "binaries" / "linux64" / f"{model[0]}.so"
     linux = subprocess.run([str(ROOT / "build" / "fmu_driver"), str(so), str(STEPS), model[0]],
