@@ -73,10 +73,14 @@ def plot(result, step, output):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--fmu", default=str(ROOT / "dist" / "AngularKinematics.fmu"))
-    parser.add_argument("--stop-time", type=float, default=10.0)
-    parser.add_argument("--step", type=float, default=0.01)
+    summary, details = __doc__.split("\n\n", 1)
+    parser = argparse.ArgumentParser(description=" ".join(summary.split()), epilog=details,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--fmu", default=str(ROOT / "dist" / "AngularKinematics.fmu"),
+                        help="the FMU to simulate (default: %(default)s)")
+    parser.add_argument("--stop-time", type=float, default=10.0, help="seconds (default: 10)")
+    parser.add_argument("--step", type=float, default=0.01,
+                        help="communication step in seconds (default: 0.01)")
     parser.add_argument("--output", default=str(ROOT / "results" / "tumbling_body.csv"),
                         help="the CSV; the plot goes beside it with the suffix .png")
     parser.add_argument("--no-progress", action="store_true", help="never show a progress bar")
@@ -97,6 +101,9 @@ def main():
     print(f"largest difference between |omega_fixed| and |omega_body|: "
           f"{np.abs(speed_fixed - speed_body).max():.1e} rad/s")
     print(f"wrote {output} and {picture}")
+    print(f"note: the CSV row at time t holds the outputs of the inputs of t - {args.step:g} s (fmpy's "
+          f"co-simulation master records after each step, the inputs held over it); the input "
+          f"columns beside them are those inputs, and the plot is drawn against their time")
     return 0
 
 

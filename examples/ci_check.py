@@ -12,8 +12,8 @@ match the reference's to 1e-13 (the same trajectory went in).
     .venv/bin/python examples/ci_check.py --reference OTHER.csv
     .venv/bin/python examples/ci_check.py --update             # store a new reference (review it!)
 
-Exit status: 0 all outputs within tolerance, 1 regression, 2 the run cannot be compared (missing
-file, other columns or time grid)."""
+Exit status: 0 all outputs within tolerance, 1 regression, 2 the run cannot be compared (no FMU or
+an FMU fmpy cannot simulate, no reference, other columns or time grid)."""
 import argparse
 import pathlib
 import sys
@@ -99,15 +99,32 @@ def compare(result, path):
     return status
 
 
-def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--fmu", default=str(ROOT / "dist" / "AngularKinematics.fmu"))
-    parser.add_argument("--reference", default=str(ROOT / "examples" / "reference" /
-                                                   "tumbling_body_reference.csv"))
-    parser.add_argument("--update", action="store_true",
+def parser():
+    summary, details = __doc__.split("\n\n", 1)
+    result = argparse.ArgumentParser(description=" ".join(summary.split()), epilog=details,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    result.add_argument("--fmu", default=str(ROOT / "dist" / "AngularKinematics.fmu"),
+                        help="the FMU to check (default: %(default)s)")
+    result.add_argument("--reference", default=str(ROOT / "examples" / "reference" /
+                                                   "tumbling_body_reference.csv"),
+                        help="the stored reference result, a CSV file (default: %(default)s)")
+    result.add_argument("--update", action="store_true",
                         help="store this run as the new reference instead of comparing")
-    args = parser.parse_args(argv)
-    result = simulate(args.fmu)
+    return result
+
+
+def main(argv=None):
+    args = parser().parse_args(argv)
+    if not pathlib.Path(args.fmu).is_file():
+        print(f"no FMU at {args.fmu}: build it with bash scripts/build.sh, or name one with --fmu")
+        print("ERROR: not comparable")
+        return 2
+    try:
+        result = simulate(args.fmu)
+    except Exception as error:  # fmpy's message names what is wrong with the file
+        print(f"{args.fmu} could not be simulated: {error}")
+        print("ERROR: not comparable")
+        return 2
     path = pathlib.Path(args.reference)
     if args.update:
         write_reference(result, path)

@@ -6,10 +6,27 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# apt quietly (its output goes to a log, printed only on failure), waiting up to 10 minutes for a
+# lock another apt holds instead of failing at once.
+apt_install() {
+  echo "setup: installing $* from Debian's packages"
+  local log
+  log=$(mktemp)
+  if ! { apt-get -o DPkg::Lock::Timeout=600 update -qq &&
+         DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq \
+           --no-install-recommends "$@"; } >"$log" 2>&1; then
+    tail -n 40 "$log"
+    rm -f "$log"
+    echo "setup: apt-get failed (last lines above)" >&2
+    exit 1
+  fi
+  rm -f "$log"
+}
+
 missing=()
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)
 command -v cc >/dev/null 2>&1 || missing+=(gcc libc6-dev)
-command -v python3 >/dev/null 2>&1 || missing+=(python3 python3-venv)
+command -v python3 >/dev/null 2>&1 || missing+=(python3)
 # The Windows binary is cross-compiled with mingw-w64; the tests run it under wine (--with-wine).
 command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-x86-64-win32)
 if [ "${1:-}" = "--with-wine" ]; then
@@ -17,14 +34,17 @@ if [ "${1:-}" = "--with-wine" ]; then
     [ -x /usr/lib/wine/wine64 ] || missing+=(wine64)
 fi
 if [ ${#missing[@]} -gt 0 ]; then
-  echo "setup: installing ${missing[*]} from Debian's packages"
-  apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  apt_install "${missing[@]}"
 fi
 
 stamp=.venv/.requirements-installed
 if [ ! -x .venv/bin/python ]; then
-  python3 -m venv .venv
+  # Debian ships venv's pip bootstrap (ensurepip) in python3-venv, also when python3 is there.
+  if ! python3 -m venv .venv >/dev/null 2>&1; then
+    rm -rf .venv
+    apt_install python3-venv
+    python3 -m venv .venv
+  fi
 fi
 if [ ! -f "$stamp" ] || ! cmp -s requirements.txt "$stamp"; then
   .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt

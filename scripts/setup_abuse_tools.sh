@@ -5,6 +5,20 @@
 # Idempotent: a second run installs nothing and does not touch the network.
 set -euo pipefail
 
+# apt quietly (its output goes to a log, printed only on failure), waiting up to 10 minutes for a
+# lock another apt holds instead of failing at once.
+apt_run() {
+  local log
+  log=$(mktemp)
+  if ! DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 -qq "$@" >"$log" 2>&1; then
+    tail -n 40 "$log"
+    rm -f "$log"
+    echo "setup_abuse_tools: apt-get $1 failed (last lines above)" >&2
+    exit 1
+  fi
+  rm -f "$log"
+}
+
 missing=()
 command -v clang >/dev/null 2>&1 || missing+=(clang)
 command -v llvm-symbolizer >/dev/null 2>&1 || missing+=(llvm)
@@ -12,9 +26,8 @@ command -v valgrind >/dev/null 2>&1 || missing+=(valgrind)
 command -v cppcheck >/dev/null 2>&1 || missing+=(cppcheck)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup_abuse_tools: installing ${missing[*]} from Debian's packages"
-  apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-    -o DPkg::Lock::Timeout=600 "${missing[@]}" >/dev/null
+  apt_run update
+  apt_run install -y --no-install-recommends "${missing[@]}"
   updated=yes
 fi
 
@@ -24,7 +37,6 @@ if [ ! -f "$runtime_dir/libclang_rt.fuzzer-x86_64.a" ] && \
    [ ! -f "$(clang -print-file-name=libclang_rt.fuzzer-x86_64.a)" ]; then
   version=$(clang -dumpversion | cut -d. -f1)
   echo "setup_abuse_tools: installing libclang-rt-$version-dev (libFuzzer) from Debian's packages"
-  [ "${updated:-}" = yes ] || apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-    -o DPkg::Lock::Timeout=600 "libclang-rt-$version-dev" >/dev/null
+  [ "${updated:-}" = yes ] || apt_run update
+  apt_run install -y --no-install-recommends "libclang-rt-$version-dev"
 fi

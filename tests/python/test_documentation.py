@@ -1,5 +1,7 @@
-"""The documentation packaged in every model's FMU and README.md: generated from the same sources and
-up to date, with the variables of every model, their units, the capabilities and the figures."""
+"""The documentation packaged in the FMUs, docs/variables.md and README.md's table: generated from
+docs/ and the modelDescription.xml files, up to date, with the variables, their units, the
+capabilities and the figures, and no link that leaves the FMU."""
+import posixpath
 import re
 import subprocess
 import sys
@@ -20,16 +22,22 @@ def test_readme_and_documentation_are_up_to_date(root):
 
 
 class Page(HTMLParser):
-    """The images, the h2 headings and the text of every table cell of a page."""
+    """The images, the links (href and src), the ids, the h2 headings and the text of every table
+    cell of a page."""
 
     def __init__(self):
         super().__init__()
         self.images, self.headings, self.cells, self._open = [], [], [], None
+        self.links, self.ids = [], set()
 
     def handle_starttag(self, tag, attributes):
+        attributes = dict(attributes)
+        self.links += [attributes[a] for a in ("href", "src") if a in attributes]
+        if "id" in attributes:
+            self.ids.add(attributes["id"])
         if tag == "img":
-            self.images.append(dict(attributes)["src"])
-        elif tag in ("h2", "td"):
+            self.images.append(attributes["src"])
+        if tag in ("h2", "td"):
             self._open = (tag, [])
 
     def handle_data(self, data):
@@ -43,19 +51,40 @@ class Page(HTMLParser):
             self._open = None
 
 
-@pytest.fixture(scope="module")
-def page(model):
-    """The page packaged in the model's FMU."""
-    with zipfile.ZipFile(model.fmu_path) as archive:
+def read_page(path):
+    with zipfile.ZipFile(path) as archive:
         parser = Page()
         parser.feed(archive.read("documentation/index.html").decode())
         return parser, set(archive.namelist())
 
 
+@pytest.fixture(scope="module")
+def page(model):
+    """The page packaged in the model's FMU."""
+    return read_page(model.fmu_path)
+
+
 def test_documentation_has_the_sections(page):
     parser, _ = page
-    assert parser.headings == ["What it computes", "Rotation sequences and conventions", "Variables",
-                               "EulerRates: the inverse map", "FMI behaviour", "Capabilities"]
+    assert parser.headings == ["What it computes", "Rotation sequences and conventions",
+                               "EulerRates: the inverse map", "FMI behaviour", "Capabilities",
+                               "Variables of AngularKinematics", "Variables of EulerRates",
+                               "Sequence items", "Capability flags"]
+
+
+def test_every_link_of_the_documentation_resolves_inside_the_fmu(page):
+    """Every href and src of documentation/index.html, opened from the unzipped FMU, names a file of
+    the archive or an anchor of the page: nothing points outside the FMU."""
+    parser, names = page
+    assert parser.links, "the page has links and figures"
+    for link in parser.links:
+        assert "://" not in link and not link.startswith(("/", "mailto:")), link
+        target, _, anchor = link.partition("#")
+        if target:
+            resolved = posixpath.normpath(posixpath.join("documentation", target))
+            assert resolved in names, f"{link} -> {resolved} is not in the FMU"
+        else:
+            assert anchor in parser.ids, f"{link}: no element with that id"
 
 
 @pytest.mark.parametrize("which", project.MODELS)

@@ -26,6 +26,8 @@ def test_demo_writes_csv_and_plot(fmu_path, tmp_path):
     done = run(ROOT / "demo" / "tumbling_body.py", "--fmu", fmu_path, "--stop-time", "2",
                "--output", output)
     assert done.returncode == 0, done.stderr
+    # Said where the result is shown: the rows lag the inputs by one step (fmpy records after it).
+    assert "the CSV row at time t holds the outputs of the inputs of t - 0.01 s" in done.stdout
     with output.open() as file:
         rows = list(csv.reader(file))
     assert len(rows) == 1 + 201
@@ -76,6 +78,37 @@ def tampered(tmp_path, column, row, relative):
     path = tmp_path / f"tampered_{relative:g}.csv"
     path.write_text("\n".join(lines) + "\n")
     return path
+
+
+def test_ci_check_without_an_fmu_exits_2_with_a_message(tmp_path):
+    missing = tmp_path / "nonexistent.fmu"
+    done = run(CI_CHECK, "--fmu", missing)
+    assert done.returncode == 2, done.stdout + done.stderr
+    assert f"no FMU at {missing}" in done.stdout
+    assert "Traceback" not in done.stdout + done.stderr
+
+
+def test_ci_check_with_a_file_that_is_no_fmu_exits_2(tmp_path):
+    broken = tmp_path / "broken.fmu"
+    broken.write_text("not a zip archive")
+    done = run(CI_CHECK, "--fmu", broken)
+    assert done.returncode == 2, done.stdout + done.stderr
+    assert "could not be simulated" in done.stdout and "Traceback" not in done.stderr
+
+
+def test_ci_check_help_is_complete():
+    """The summary is whole sentences and every option says what it is."""
+    done = run(CI_CHECK, "--help")
+    assert done.returncode == 0, done.stderr
+    text = " ".join(done.stdout.split())
+    assert ("A simulation check to copy into CI: runs a reference trajectory through an FMU with "
+            "fmpy and compares every output with a stored reference result; exits 1 on a "
+            "regression.") in text
+    for option, words in (("--fmu FMU", "the FMU to check"),
+                          ("--reference REFERENCE", "the stored reference result"),
+                          ("--update", "store this run as the new reference")):
+        assert f"{option} {words}" in text, option
+    assert "Exit status: 0 all outputs within tolerance, 1 regression, 2 the run cannot be" in text
 
 
 def test_ci_check_fails_on_a_regression(fmu_path, tmp_path):
