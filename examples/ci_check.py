@@ -106,7 +106,12 @@ def main(argv=None):
                                                    "tumbling_body_reference.csv"))
     parser.add_argument("--update", action="store_true",
                         help="store this run as the new reference instead of comparing")
+    parser.add_argument("--cross-check", metavar="DIR",
+                        help="instead: re-simulate a folder in the FMI Cross-Check layout "
+                             "(dist/cross-check/) and fail on a difference beyond its tolerance")
     args = parser.parse_args(argv)
+    if args.cross_check:
+        return cross_check(args.cross_check)
     result = simulate(args.fmu)
     path = pathlib.Path(args.reference)
     if args.update:
@@ -116,6 +121,17 @@ def main(argv=None):
     status = compare(result, path)
     print({0: "PASSED: no regression", 1: "FAILED: regression against the reference",
            2: "ERROR: not comparable"}[status])
+    return status
+
+
+def cross_check(folder):
+    """--cross-check DIR: examples/cross_check.py (copy it beside this file) re-simulates every
+    <Model>_in.csv under DIR and compares with <Model>_ref.csv; exit 0 equal, 1 different, 2 empty."""
+    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+    from cross_check import check_folder
+    status = check_folder(pathlib.Path(folder))
+    print({0: "PASSED: the cross-check results agree", 1: "FAILED: a result differs",
+           2: "ERROR: nothing to compare"}[status])
     return status
 
 
