@@ -12,7 +12,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-fail() { echo "release: FAILED: $*" >&2; exit 1; }
+fail() {
+  echo "release: FAILED: $*" >&2
+  [ -z "${work:-}" ] || echo "release: the builds are kept in $work" >&2
+  exit 1
+}
 
 version=$(sed -n 's/^VERSION = "\(.*\)"$/\1/p' codegen/project.py)
 [ -n "$version" ] || fail "no VERSION in codegen/project.py"
@@ -23,7 +27,6 @@ grep -Eq "^#+ .*\b${version//./\\.}\b" CHANGELOG.md || fail "CHANGELOG.md has no
 commit=$(git rev-parse HEAD)
 
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 for side in one two; do
   clone="$work/$side/AngularKinematics"
   git clone -q --no-local "$root" "$clone"
@@ -67,3 +70,4 @@ cp -r "$one"/. dist/
 bash scripts/checksums.sh dist
 echo "release: dist/ of $commit, dist/SHA256SUMS:"
 cat dist/SHA256SUMS
+rm -rf "$work"
