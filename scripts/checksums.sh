@@ -4,6 +4,8 @@
 #   bash scripts/checksums.sh DIR
 set -euo pipefail
 cd "$1"
+sums=$(mktemp)
 find . -type f ! -name SHA256SUMS ! -name README.md -printf '%P\n' | LC_ALL=C sort |
-  while IFS= read -r file; do sha256sum -- "$file"; done >SHA256SUMS.new
-mv SHA256SUMS.new SHA256SUMS
+  while IFS= read -r file; do sha256sum -- "$file"; done >"$sums"
+mv "$sums" SHA256SUMS
+chmod 644 SHA256SUMS

@@ -6,7 +6,7 @@
 #   3. every file of the two dist/ folders compared byte for byte (no timestamps or build paths);
 #   4. the version attribute of every modelDescription.xml, CMake's project version
 #      (build/CMakeCache.txt) and the "version X.Y.Z" of the FMU documentation equal to VERSION;
-#   5. the first clone's dist/ copied to dist/ here, with dist/SHA256SUMS.
+#   5. the first clone's dist/ in place of dist/ here (but dist/README.md), with dist/SHA256SUMS.
 # Uncommitted changes are not part of a release: commit first. Takes about two builds' time.
 #   bash scripts/release.sh
 set -euo pipefail
@@ -66,6 +66,7 @@ done
 echo "release: version $version in codegen, CMake, every modelDescription.xml and documentation"
 
 mkdir -p dist
+find dist -mindepth 1 -maxdepth 1 ! -name README.md -exec rm -rf {} +  # nothing stale in the release
 cp -r "$one"/. dist/
 bash scripts/checksums.sh dist
 echo "release: dist/ of $commit, dist/SHA256SUMS:"
