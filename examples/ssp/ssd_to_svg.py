@@ -11,7 +11,7 @@ from xml.sax.saxutils import escape
 from lxml import etree
 
 NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription"}
-ROW, WIDTH, GAP, TOP = 22, 170, 110, 40
+ROW, WIDTH, GAP, TOP = 22, 220, 110, 60
 
 
 def vector_name(connector):
@@ -59,7 +59,12 @@ def svg(ssd_bytes):
         end = (connection.get("endElement", ""), "input" if connection.get("endElement")
                else "output", vector_name(connection.get("endConnector")))
         (x1, y1), (x2, y2) = position[start], position[end]
-        path = f'M{x1},{y1} C{x1 + GAP / 2},{y1} {x2 - GAP / 2},{y2} {x2},{y2}'
+        if x2 - x1 > GAP + 1:  # past a component: over the top of the boxes
+            lane = TOP - 14
+            path = (f"M{x1},{y1} C{x1 + GAP / 2},{y1} {x1 + GAP / 4},{lane} {x1 + GAP / 2},{lane} "
+                    f"L{x2 - GAP / 2},{lane} C{x2 - GAP / 4},{lane} {x2 - GAP / 2},{y2} {x2},{y2}")
+        else:
+            path = f"M{x1},{y1} C{x1 + GAP / 2},{y1} {x2 - GAP / 2},{y2} {x2},{y2}"
         if path not in lines:
             lines.append(path)
     width = 40 + len(columns) * WIDTH + (len(columns) - 1) * GAP
