@@ -110,11 +110,16 @@ def parser():
                         help="the stored reference result, a CSV file (default: %(default)s)")
     result.add_argument("--update", action="store_true",
                         help="store this run as the new reference instead of comparing")
+    result.add_argument("--cross-check", metavar="DIR",
+                        help="instead: re-simulate a folder in the FMI Cross-Check layout "
+                             "(dist/cross-check/) and fail on a difference beyond its tolerance")
     return result
 
 
 def main(argv=None):
     args = parser().parse_args(argv)
+    if args.cross_check:
+        return cross_check(args.cross_check)
     if not pathlib.Path(args.fmu).is_file():
         print(f"no FMU at {args.fmu}: build it with bash scripts/build.sh, or name one with --fmu")
         print("ERROR: not comparable")
@@ -133,6 +138,17 @@ def main(argv=None):
     status = compare(result, path)
     print({0: "PASSED: no regression", 1: "FAILED: regression against the reference",
            2: "ERROR: not comparable"}[status])
+    return status
+
+
+def cross_check(folder):
+    """--cross-check DIR: examples/cross_check.py (copy it beside this file) re-simulates every
+    <Model>_in.csv under DIR and compares with <Model>_ref.csv; exit 0 equal, 1 different, 2 empty."""
+    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+    from cross_check import check_folder
+    status = check_folder(pathlib.Path(folder))
+    print({0: "PASSED: the cross-check results agree", 1: "FAILED: a result differs",
+           2: "ERROR: nothing to compare"}[status])
     return status
 
 

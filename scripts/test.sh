@@ -19,6 +19,7 @@ fi
 [ "${1:-}" = -- ] && shift
 
 bash scripts/setup.sh --with-wine
+bash scripts/setup_importers.sh # OpenJDK, Maven, the FMI4j driver (tests/python/test_fmi4j.py)
 [ -n "$quick" ] || bash scripts/setup_abuse_tools.sh
 export AK_SET_UP=1 # the scripts below skip their own set-up and build
 bash scripts/build.sh

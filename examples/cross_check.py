@@ -1,0 +1,148 @@
+"""Results in the layout of the FMI Cross-Check (github.com/modelica/fmi-cross-check), and the
+check that re-simulates them.
+
+    fmus/2.0/<cs|me>/linux64/AngularKinematics/<version>/<Model>/
+        <Model>.fmu  <Model>_in.csv  <Model>_ref.csv  <Model>_ref.opt  ReadMe.md
+
+scripts/make_cross_check.py writes such a folder into dist/cross-check/; examples/ci_check.py
+--cross-check DIR re-simulates every <Model>_in.csv under DIR with the FMU beside it and compares
+with <Model>_ref.csv. The call sequence (also that of the FMI4j driver, examples/fmi4j/): set up,
+initialize, then at each row of <Model>_in.csv set the inputs (after fmi2SetTime in Model Exchange),
+read every Real output, and in Co-Simulation step to the next row's time. The models have no
+state: each output row is the model's function of that row's inputs.
+
+Tolerance per value: |y - y_ref| <= ABSOLUTE + RELATIVE * |y_ref|, 1e-12 each; the FMUs compute
+in double precision to ~1e-16, and the reference inputs keep every angle at least 0.5 rad from a
+singular configuration."""
+import csv
+import pathlib
+import shutil
+import tempfile
+
+import numpy as np
+from fmpy import extract, read_model_description
+from fmpy.fmi2 import FMU2Model, FMU2Slave
+
+RELATIVE = 1e-12
+ABSOLUTE = 1e-12
+START, STOP, STEP = 0.0, 4.0, 0.01
+
+
+def reference_inputs(input_names, times):
+    """Input k(0-based): 0.2 (k mod 3 + 1) + 0.6 sin((0.7 + 0.3 k) t + 0.5 k): smooth, distinct,
+    and at most 1.4 rad in size, so that no angle comes near pi/2 (the Tait-Bryan singularity)."""
+    k = np.arange(len(input_names))
+    t = np.asarray(times)[:, None]
+    return 0.2 * (k % 3 + 1) + 0.6 * np.sin((0.7 + 0.3 * k) * t + 0.5 * k)
+
+
+def real_names(model_description, causality):
+    return [v.name for v in model_description.modelVariables
+            if v.type == "Real" and v.causality == causality]
+
+
+def simulate(fmu, interface, times, input_names, inputs):
+    """(output names, array len(times) x outputs) of the FMU ('cs' or 'me') over the inputs."""
+    description = read_model_description(fmu)
+    vr = {v.name: v.valueReference for v in description.modelVariables}
+    output_names = real_names(description, "output")
+    unzipdir = extract(fmu, unzipdir=tempfile.mkdtemp())
+    try:
+        if interface == "cs":
+            instance = FMU2Slave(guid=description.guid, unzipDirectory=unzipdir,
+                                 modelIdentifier=description.coSimulation.modelIdentifier,
+                                 instanceName="fmpy")
+        else:
+            if description.numberOfContinuousStates:
+                raise ValueError(f"{fmu}: Model Exchange with continuous states is not driven here")
+            instance = FMU2Model(guid=description.guid, unzipDirectory=unzipdir,
+                                 modelIdentifier=description.modelExchange.modelIdentifier,
+                                 instanceName="fmpy")
+        instance.instantiate()
+        instance.setupExperiment(startTime=times[0], stopTime=times[-1])
+        instance.enterInitializationMode()
+        instance.exitInitializationMode()
+        if interface == "me":
+            instance.newDiscreteStates()
+            instance.enterContinuousTimeMode()
+        input_vrs = [vr[n] for n in input_names]
+        output_vrs = [vr[n] for n in output_names]
+        outputs = np.empty((len(times), len(output_names)))
+        for row, time in enumerate(times):
+            if interface == "me":
+                instance.setTime(time)
+            instance.setReal(input_vrs, list(inputs[row]))  # fmpy raises on any status but OK
+            outputs[row] = instance.getReal(output_vrs)
+            if interface == "cs" and row + 1 < len(times):
+                instance.doStep(currentCommunicationPoint=time,
+                                communicationStepSize=times[row + 1] - time)
+        instance.terminate()
+        instance.freeInstance()
+    finally:
+        shutil.rmtree(unzipdir, ignore_errors=True)
+    return output_names, outputs
+
+
+def write_csv(path, names, table):
+    header = ",".join(f'"{name}"' for name in names)
+    np.savetxt(path, table, delimiter=",", fmt="%.17g", header=header, comments="")
+
+
+def read_csv(path):
+    with open(path, newline="") as file:
+        names = next(csv.reader(file))  # quoted: names such as R[1,2] hold commas
+    return names, np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+
+
+def read_options(path):
+    options = {}
+    for line in pathlib.Path(path).read_text().splitlines():
+        key, value = line.split(",")
+        options[key.strip()] = float(value)
+    return options
+
+
+def check_model(folder, interface):
+    """Re-simulates one <Model>/ folder; prints one line per output; returns 0 ok, 1 deviation."""
+    model = folder.name
+    in_names, inputs = read_csv(folder / f"{model}_in.csv")
+    ref_names, reference = read_csv(folder / f"{model}_ref.csv")
+    options = read_options(folder / f"{model}_ref.opt")
+    times = inputs[:, 0]
+    if abs(times[0] - options["StartTime"]) > 1e-12 or abs(times[-1] - options["StopTime"]) > 1e-12:
+        print(f"{folder}: the time grid of {model}_in.csv does not span {model}_ref.opt's")
+        return 1
+    names, outputs = simulate(str(folder / f"{model}.fmu"), interface, times, in_names[1:],
+                              inputs[:, 1:])
+    if ref_names[1:] != names or len(reference) != len(outputs):
+        print(f"{folder}: {model}_ref.csv has other outputs or rows than the FMU gives")
+        return 1
+    status = 0
+    for k, name in enumerate(names):
+        deviation = np.abs(outputs[:, k] - reference[:, k + 1])
+        ratio = deviation / (ABSOLUTE + RELATIVE * np.abs(reference[:, k + 1]))
+        worst = int(np.argmax(ratio))
+        if ratio[worst] > 1:
+            status = 1
+            print(f"DIFFERENT {interface} {model} {name}: {deviation[worst]:.3g} at "
+                  f"t = {times[worst]:g} s ({ratio[worst]:.3g} of the tolerance)")
+    largest = max(float(np.max(np.abs(outputs[:, k] - reference[:, k + 1])))
+                  for k in range(len(names)))
+    print(f"{'ok' if status == 0 else 'FAILED':>9} {interface} {model}: {len(names)} outputs x "
+          f"{len(times)} rows, largest deviation {largest:.3g}")
+    return status
+
+
+def check_folder(root):
+    """Every <Model>_ref.opt under root, its interface from the path (.../cs/... or .../me/...)."""
+    folders = sorted(path.parent for path in pathlib.Path(root).rglob("*_ref.opt"))
+    if not folders:
+        print(f"no *_ref.opt under {root}")
+        return 2
+    print(f"tolerance per value: {ABSOLUTE:g} + {RELATIVE:g} * |reference|")
+    status = 0
+    for folder in folders:
+        parts = folder.relative_to(root).parts
+        interface = "me" if "me" in parts else "cs"
+        status = max(status, check_model(folder, interface))
+    return status
