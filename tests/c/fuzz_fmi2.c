@@ -150,7 +150,7 @@ static void decode_args(ak_input *in, const ak_op *op, ak_slot *slot, ak_decoded
         d->vr[i] = take_vr(in);
     }
     a->vr = (nulls & NULL_VR) ? NULL : d->vr;
-    a->data.values = take_values(in, op->values_type, a->nvr, time);
+    a->values = take_values(in, op->values_type, a->nvr, time);
     a->values2 = take_values(in, op->values2_type, a->nvr, time);
     a->nvr2 = take_byte(in) % MAX_COUNT;
     d->vr2 = malloc(a->nvr2 * sizeof *d->vr2 + 1);
@@ -182,8 +182,8 @@ static void decode_args(ak_input *in, const ak_op *op, ak_slot *slot, ak_decoded
     }
     /* The pointers kept in d for freeing; the arguments may hide them behind NULL. */
     if (nulls & NULL_VALUES) {
-        free(a->data.values);
-        a->data.values = NULL;
+        free(a->values);
+        a->values = NULL;
     }
     if (nulls & NULL_VALUES2) {
         free(a->values2);
@@ -203,7 +203,7 @@ static void free_decoded(ak_decoded *d) {
     free(d->vr);
     free(d->vr2);
     free(d->categories);
-    free(d->args.data.values);
+    free(d->args.values);
     free(d->args.values2);
     free(d->args.known);
     free(d->args.bytes);
