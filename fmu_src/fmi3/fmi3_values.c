@@ -156,7 +156,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         }
         total += array->n_elements;
     }
-    if (!ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
         return fmi3Error;
     }
     fmi3Status status = fmi3OK;
@@ -209,32 +209,49 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         }
         total += array->n_elements;
     }
-    if (!ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
         return fmi3Error;
     }
     size_t k = 0;
     for (size_t i = 0; i < nvr; i++) {
+        const bool parameter = ak_variable_of(vr[i])->causality == AK_CAUSALITY_PARAMETER;
         for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++, k++) {
-            const ak_variable *element = ak_variable_of(vr[i] + e);
             if (!isfinite(values[k])) {
                 ak3_log(instance, AK_LOG_ERROR, fmi3Error,
                         "fmi3SetFloat64: %s = %g (values[%zu], valueReferences[%zu] = %u) is not "
                         "finite; no value set",
-                        element->name, values[k], k, i, vr[i]);
+                        ak_variable_of(vr[i] + e)->name, values[k], k, i, vr[i]);
                 return fmi3Error;
             }
-            if (element->causality == AK_CAUSALITY_PARAMETER &&
-                !parameter_settable(instance, self, i, element, values[k])) {
+            if (parameter &&
+                !parameter_settable(instance, self, i, ak_variable_of(vr[i] + e), values[k])) {
                 return fmi3Error;
             }
         }
     }
-    const bool trace = ak3_log_on(instance, AK_LOG_CALLS);
+    if (ak3_log_on(instance, AK_LOG_CALLS)) {
+        k = 0;
+        for (size_t i = 0; i < nvr; i++) {
+            for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++) {
+                store(instance, self, true, vr[i] + e, values[k++]);
+            }
+        }
+        return fmi3OK;
+    }
+    /* The hot path of every communication point: copy, noting whether anything changed (only a
+     * real change makes the outputs stale). */
+    bool changed = false;
     k = 0;
     for (size_t i = 0; i < nvr; i++) {
-        for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++) {
-            store(instance, self, trace, vr[i] + e, values[k++]);
+        double *target = &instance->data.values[vr[i]];
+        const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
+        for (unsigned int e = 0; e < n; e++, k++) {
+            changed = changed || target[e] != values[k];
+            target[e] = values[k];
         }
+    }
+    if (changed) {
+        ak3_instance_inputs_changed(instance);
     }
     return fmi3OK;
 }
@@ -255,7 +272,7 @@ fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
         }
         total += array->n_elements;
     }
-    if (!ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
@@ -280,7 +297,7 @@ fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
         }
         total += array->n_elements;
     }
-    if (!ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
