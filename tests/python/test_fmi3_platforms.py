@@ -90,3 +90,36 @@ def test_windows_binary_under_wine_computes_the_same(model, linux_printouts, rep
     assert close.all(), np.flatnonzero(~close)[:5]
     report(f"{model}: x86_64-windows under wine: {same} of {a.size} values bit-identical to "
            f"x86_64-linux, the others within {int(ulps.max())} ulp of their own or 4 ulp of 1")
+
+
+def header_functions():
+    """Every function fmi3Functions.h declares (fmpy 0.3.32's copy, the one we compile with)."""
+    import fmpy
+    import re as regex
+    header = (pathlib.Path(fmpy.__file__).parent / "c-code" / "fmi3Functions.h").read_text()
+    return set(regex.findall(r"#define (fmi3\w+)\s+fmi3FullName\(", header))
+
+
+@pytest.mark.parametrize("platform", ["x86_64-linux", "aarch64-linux", "x86_64-windows"])
+@pytest.mark.parametrize("model", MODELS)
+def test_every_function_of_the_header_is_exported(model, platform):
+    expected = header_functions()
+    assert len(expected) >= 70 and "fmi3GetAdjointDerivative" in expected
+    path = binary(model, platform)
+    if platform.endswith("windows"):
+        table = subprocess.run(["x86_64-w64-mingw32-objdump", "-p", str(path)], check=True,
+                               capture_output=True, text=True).stdout
+        table = table.split("[Ordinal/Name Pointer] Table", 1)[1].split("\n\n", 1)[0]
+        exported = {word for word in table.split() if word.startswith("fmi3")}
+    else:
+        symbols = subprocess.run(["nm", "-D", "--defined-only", str(path)], check=True,
+                                 capture_output=True, text=True).stdout
+        exported = {line.split()[-1] for line in symbols.splitlines()}
+    assert {name for name in exported if name.startswith("fmi")} == expected
+
+
+def test_get_version_is_3_0():
+    import ctypes
+    library = ctypes.CDLL(str(binary("AngularKinematics", "x86_64-linux")))
+    library.fmi3GetVersion.restype = ctypes.c_char_p
+    assert library.fmi3GetVersion() == b"3.0"
