@@ -8,7 +8,7 @@
 static size_t dependency_count(const ak3_array *array) {
     size_t n = 0;
     for (unsigned int e = 0; e < array->n_elements; e++) {
-        n += ak_variable_of(array->first_vr + e)->n_dependencies;
+        n += AK_MODEL.variables[array->first_vr + e].n_dependencies;
     }
     return n;
 }
@@ -65,7 +65,7 @@ fmi3Status fmi3GetVariableDependencies(fmi3Instance c, fmi3ValueReference depend
     }
     size_t k = 0;
     for (unsigned int e = 0; e < array->n_elements; e++) {
-        const ak_variable *element = ak_variable_of(array->first_vr + e);
+        const ak_variable *element = &AK_MODEL.variables[array->first_vr + e];
         for (size_t d = 0; d < element->n_dependencies; d++, k++) {
             const ak3_array *input = &AK3_ARRAYS[element->dependencies[d]];
             elementIndicesOfDependent[k] = element_index(array, array->first_vr + e);

@@ -35,7 +35,7 @@ static const ak3_array *array_of_type(const ak3_instance *instance, ak3_function
                 ak3_function_name(function), index, vr);
         return NULL;
     }
-    const ak_variable *variable = ak_variable_of(vr);
+    const ak_variable *variable = &AK_MODEL.variables[vr]; /* known: an array */
     if (variable->type != type) {
         ak3_log(instance, AK_LOG_ERROR, fmi3Error,
                 "%s: valueReferences[%zu] = %u is %s, of type %s", ak3_function_name(function),
@@ -55,7 +55,7 @@ const ak3_array *ak3_array_of_causality(const ak3_instance *instance, ak3_functi
                 ak3_function_name(function), list_name, index, vr);
         return NULL;
     }
-    const ak_causality found = ak_variable_of(vr)->causality;
+    const ak_causality found = AK_MODEL.variables[vr].causality;
     if (found != causality) {
         ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
                 ak3_function_name(function), list_name, index, vr, array->name,
@@ -115,7 +115,7 @@ static void store(ak3_instance *instance, ak3_function function, bool trace, uns
                   double value) {
     if (trace) {
         ak3_log(instance, AK_LOG_CALLS, fmi3OK, "%s: %s = %.17g", ak3_function_name(function),
-                ak_variable_of(vr)->name, value);
+                AK_MODEL.variables[vr].name, value);
     }
     /* Only a real change makes the outputs stale: importers often set unchanged inputs. */
     if (instance->data.values[vr] != value) {
@@ -149,7 +149,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         if (array == NULL) {
             return fmi3Error;
         }
-        const ak_variable *variable = ak_variable_of(vr[i]);
+        const ak_variable *variable = &AK_MODEL.variables[vr[i]];
         if (variable->causality == AK_CAUSALITY_OUTPUT) {
             main = true;
             lazy = lazy || variable->group == AK_GROUP_LAZY;
@@ -199,7 +199,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         if (array == NULL) {
             return fmi3Error;
         }
-        const ak_variable *variable = ak_variable_of(vr[i]);
+        const ak_variable *variable = &AK_MODEL.variables[vr[i]];
         if (variable->causality == AK_CAUSALITY_OUTPUT) {
             ak3_log(instance, AK_LOG_ERROR, fmi3Error,
                     "fmi3SetFloat64: valueReferences[%zu] = %u is %s, an output: only inputs and "
@@ -214,17 +214,17 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     }
     size_t k = 0;
     for (size_t i = 0; i < nvr; i++) {
-        const bool parameter = ak_variable_of(vr[i])->causality == AK_CAUSALITY_PARAMETER;
+        const bool parameter = AK_MODEL.variables[vr[i]].causality == AK_CAUSALITY_PARAMETER;
         for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++, k++) {
             if (!isfinite(values[k])) {
                 ak3_log(instance, AK_LOG_ERROR, fmi3Error,
                         "fmi3SetFloat64: %s = %g (values[%zu], valueReferences[%zu] = %u) is not "
                         "finite; no value set",
-                        ak_variable_of(vr[i] + e)->name, values[k], k, i, vr[i]);
+                        AK_MODEL.variables[vr[i] + e].name, values[k], k, i, vr[i]);
                 return fmi3Error;
             }
             if (parameter &&
-                !parameter_settable(instance, self, i, ak_variable_of(vr[i] + e), values[k])) {
+                !parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i] + e], values[k])) {
                 return fmi3Error;
             }
         }
@@ -302,7 +302,7 @@ fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
     }
     for (size_t i = 0; i < nvr; i++) {
         /* An Int64 far out of range becomes a large double, which check_parameter refuses. */
-        if (!parameter_settable(instance, self, i, ak_variable_of(vr[i]), (double)values[i])) {
+        if (!parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i]], (double)values[i])) {
             return fmi3Error;
         }
     }
