@@ -238,16 +238,19 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         }
         return fmi3OK;
     }
-    /* The hot path of every communication point: copy, noting whether anything changed (only a
-     * real change makes the outputs stale). */
+    /* The hot path of every communication point. As store() (and the FMI 2 layer): only a value
+     * that compares different is written and makes the outputs stale, so -0.0 over 0.0 is not
+     * written and both layers evaluate the same bits. */
     bool changed = false;
     k = 0;
     for (size_t i = 0; i < nvr; i++) {
         double *target = &instance->data.values[vr[i]];
         const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
         for (unsigned int e = 0; e < n; e++, k++) {
-            changed = changed || target[e] != values[k];
-            target[e] = values[k];
+            if (target[e] != values[k]) {
+                target[e] = values[k];
+                changed = true;
+            }
         }
     }
     if (changed) {

@@ -91,3 +91,25 @@ def check_derivatives(fmi2, fmi3, outputs, output_vrs, rng):
     assert fmi3.call("fmi3GetOutputDerivatives", vrs(fmi3.vr[n] for n in outputs[:4]), 4,
                      (ctypes.c_int32 * 4)(1, 1, 1, 1), o3, 12) == 0
     assert np.array_equal(bits(list(o2)), bits(list(o3)))
+
+
+def test_signed_zero_inputs_give_the_fmi2_bits(unzipdir, model_description):
+    """A -0.0 set over 0.0 compares equal: neither layer writes it, so later evaluations use the
+    same bits in both (sign of zero outputs included)."""
+    fmi2 = Instance(unzipdir, model_description, name="fmi2")
+    fmi3 = Instance3("AngularKinematics", name="fmi3")
+    try:
+        fmi2.initialize(parameters={"sequence": 3})
+        fmi3.initialize(parameters={"sequence": 3})
+        for u in ([-0.0] * 9, [0.0, -0.0, 0.5, -0.0, 0.0, 0.0, 0.0, -0.0, 0.0]):
+            assert fmi2.call("fmi2SetReal", vrs(range(9)), 9, doubles(u)) == 0
+            assert fmi3.set({"theta": u[:3], "theta_dot": u[3:6], "theta_ddot": u[6:]}) == 0
+            names = fmi3.outputs()
+            y3 = np.concatenate([fmi3.get(names)[n] for n in names])
+            y2 = (ctypes.c_double * len(y3))()
+            assert fmi2.call("fmi2GetReal", vrs(range(9, 9 + len(y3))), len(y3), y2) == 0
+            assert np.array_equal(bits(list(y2)), bits(y3))
+            assert np.array_equal(bits(fmi3.get(["theta"])["theta"]), bits([0.0, 0.0, 0.5][:3] if u[2] else [0.0] * 3))
+    finally:
+        fmi2.free()
+        fmi3.free()
