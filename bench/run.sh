@@ -29,10 +29,11 @@ calls=1e6
 fmpy_steps=100000
 fmpy_repeats=5
 callgrind=yes
+fmi3_steps=1e6 # per run of bench/bench_fmi3.c (--quick: 1e5)
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) steps=1e3,1e4,1e5; repeats=3; calls=1e5; fmpy_steps=2000; fmpy_repeats=3
-             callgrind=no ;;
+             callgrind=no; fmi3_steps=1e5 ;;
     --steps) steps="$2"; shift ;;
     --repeats) repeats="$2"; shift ;;
     --calls) calls="$2"; shift ;;
@@ -112,6 +113,10 @@ callgrind_table() {
   machine
   echo
   "$driver" "$fmu_so" --steps "$steps" --repeats "$repeats" --calls "$calls"
+  echo
+  # The FMI 3 cycle beside the FMI 2 cycle and the core, alternately (bench/bench_fmi3.c).
+  build/bench/bench_fmi3 "$fmu_so" build/fmu3/binaries/x86_64-linux/AngularKinematics.so \
+    "$fmi3_steps" "$repeats"
   echo
   if [ "$callgrind" = yes ] && command -v valgrind >/dev/null 2>&1; then
     callgrind_table

@@ -28,12 +28,37 @@ set(AK_FMI2_HEADERS
   fmu_src/fmi2/fmi2_derivatives.h
   fmu_src/models/model.h
   fmu_src/models/log_categories.h)
+set(AK_FMI3_SOURCES
+  fmu_src/fmi3/fmi3_instance.c
+  fmu_src/fmi3/fmi3_logging.c
+  fmu_src/fmi3/fmi3_state_machine.c
+  fmu_src/fmi3/fmi3_lifecycle.c
+  fmu_src/fmi3/fmi3_values.c
+  fmu_src/fmi3/fmi3_cosimulation.c
+  fmu_src/fmi3/fmi3_model_exchange.c
+  fmu_src/fmi3/fmi3_derivatives.c
+  fmu_src/fmi3/fmi3_dependencies.c
+  fmu_src/fmi3/fmi3_fmu_state.c
+  fmu_src/fmi3/fmi3_unsupported.c)
+set(AK_FMI3_HEADERS
+  fmu_src/fmi3/fmi3_instance.h
+  fmu_src/fmi3/fmi3_logging.h
+  fmu_src/fmi3/fmi3_state_machine.h
+  fmu_src/fmi3/fmi3_arrays.h
+  fmu_src/fmi3/fmi3_values.h
+  fmu_src/common/ak_bytes.h
+  fmu_src/models/model.h
+  fmu_src/models/log_categories.h)
+set(AK_FMI3_ARRAYS_AngularKinematics
+  fmu_src/models/AngularKinematics/fmi3/AngularKinematics_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_AngularKinematics
   fmu_src/models/AngularKinematics/model.c
   fmu_src/models/AngularKinematics/AngularKinematics_variables.c)
 set(AK_MODEL_HEADERS_AngularKinematics
   fmu_src/models/AngularKinematics/AngularKinematics_variables.h)
 set(AK_MODEL_DESCRIPTION_AngularKinematics "modelDescription.xml")
+set(AK_FMI3_ARRAYS_EulerRates
+  fmu_src/models/EulerRates/fmi3/EulerRates_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_EulerRates
   fmu_src/models/EulerRates/model.c
   fmu_src/models/EulerRates/EulerRates_variables.c)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Runs the C tests of the FMI layer (test_fmi2_calls, test_fmi2_instances, soak_fmi2, each built
-# for both models: AngularKinematics, and EulerRates with the suffix _EulerRates; and the core's
-# test_kinematics) under AddressSanitizer + UndefinedBehaviorSanitizer, ThreadSanitizer and
+# Runs the C tests of the FMI layers (test_fmi2_calls, test_fmi2_instances, soak_fmi2, each built
+# for both models: AngularKinematics, and EulerRates with the suffix _EulerRates; fmi3_abuse_<Model>
+# for the FMI 3 layer; and the core's test_kinematics) under AddressSanitizer + UndefinedBehaviorSanitizer, ThreadSanitizer and
 # valgrind memcheck, and the pytest suite through fmpy with both FMUs built with ASan+UBSan. Any
 # report fails the run. docs/abuse_testing.md explains what each proves.
 #
@@ -44,7 +44,8 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
 
 programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRates
-  test_fmi2_instances_EulerRates soak_fmi2_EulerRates"
+  test_fmi2_instances_EulerRates soak_fmi2_EulerRates fmi3_abuse_AngularKinematics
+  fmi3_abuse_EulerRates"
 echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
 # shellcheck disable=SC2086
 configure_and_build asan $programs test_kinematics
@@ -54,11 +55,17 @@ for suffix in "" _EulerRates; do
   run asan+ubsan "build-asan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run asan+ubsan "build-asan/soak_fmi2$suffix" "$soak" --no-rss-check
 done
+for model in AngularKinematics EulerRates; do # the FMI 3 layer (tests/c/fmi3_abuse.c)
+  run asan+ubsan "build-asan/fmi3_abuse_$model" calls
+  run asan+ubsan "build-asan/fmi3_abuse_$model" instances 1000 4 "$steps"
+  run asan+ubsan "build-asan/fmi3_abuse_$model" soak "$soak"
+done
 
 # The instrumented binaries inside a real master: the whole pytest suite through fmpy.
 # Leak detection is off here only because the Python interpreter itself does not free everything
 # at exit; the FMU's leaks are checked by the C programs above and by valgrind below.
-configure_and_build asan fmu_AngularKinematics fmu_EulerRates model_info_AngularKinematics model_info_EulerRates
+configure_and_build asan fmu_AngularKinematics fmu_EulerRates fmu3_AngularKinematics fmu3_EulerRates \
+  model_info_AngularKinematics model_info_EulerRates
 # --quick: the tests of the FMI layer only (calls, bad input, FMU state, model exchange,
 # derivatives, EulerRates); the whole suite takes a minute and a half under ASan. Never
 # tests/python/test_windows_binary.py: it checks the Windows DLL packaged in dist/*.fmu, which the ASan
@@ -66,22 +73,29 @@ configure_and_build asan fmu_AngularKinematics fmu_EulerRates model_info_Angular
 if [ "$quick" = --quick ]; then
   suite=$(printf 'tests/python/%s ' test_fmi_calls.py test_bad_input.py test_fmu_state.py \
     test_model_exchange.py test_directional_derivatives.py test_output_derivatives.py \
-    test_input_interpolation.py test_euler_rates.py test_value_runs.py)
+    test_input_interpolation.py test_euler_rates.py test_value_runs.py test_fmi3_state_machine.py \
+    test_fmi3_bad_input.py test_fmi3_fmu_state.py test_fmi3_derivatives.py test_fmi3_cosimulation.py \
+    test_fmi3_bit_identity.py)
 else
-  suite="tests/python --ignore=tests/python/test_windows_binary.py"
+  suite="tests/python --ignore=tests/python/test_windows_binary.py --ignore=tests/python/test_fmi3_platforms.py"
 fi
 echo "--- asan+ubsan: pytest through fmpy with build-asan/dist/{AngularKinematics,EulerRates}.fmu"
 # shellcheck disable=SC2086
 AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asan/dist/EulerRates.fmu" \
+  AK_FMU3_DIR="$PWD/build-asan/dist/fmi3" \
   LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)" \
   ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest $suite -q -p no:cacheprovider \
   | tail -1
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"
-configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates
+configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates \
+  fmi3_abuse_AngularKinematics fmi3_abuse_EulerRates
 for suffix in "" _EulerRates; do
   run tsan "build-tsan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run tsan "build-tsan/test_fmi2_instances$suffix" 64 8 "$steps"
+done
+for model in AngularKinematics EulerRates; do
+  run tsan "build-tsan/fmi3_abuse_$model" instances 1000 4 "$steps"
 done
 
 echo "=== valgrind memcheck (the normal build, build/)"
@@ -99,6 +113,11 @@ for suffix in "" _EulerRates; do
   memcheck "build/test_fmi2_calls$suffix"
   memcheck "build/test_fmi2_instances$suffix" 1000 4 "$valgrind_steps"
   memcheck "build/soak_fmi2$suffix" "$valgrind_soak" --no-rss-check
+done
+for model in AngularKinematics EulerRates; do
+  memcheck "build/fmi3_abuse_$model" calls
+  memcheck "build/fmi3_abuse_$model" instances 100 4 "$valgrind_steps"
+  memcheck "build/fmi3_abuse_$model" soak "$valgrind_soak"
 done
 
 echo "check_sanitizers: ASan+UBSan, TSan and memcheck: 0 errors, 0 leaks"

@@ -25,6 +25,7 @@ if [ -z "${AK_SET_UP:-}" ]; then
 fi
 bash scripts/configure.sh fuzz
 cmake --build build-fuzz --parallel 2 --target fuzz_fmi2 fuzz_fmi2_EulerRates \
+  fuzz_fmi3_AngularKinematics fuzz_fmi3_EulerRates \
   >build-fuzz/build.log 2>&1 || {
   cat build-fuzz/build.log
   exit 1
@@ -59,6 +60,18 @@ for model in $models; do
   grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" \
     "build-fuzz/fuzz-$model.log" | sed "s/^/    /"
   echo "fuzz ($model): 0 crashes in $seconds s"
+
+  # The FMI 3 layer: its own encoding (tests/c/fuzz_fmi3.c), fuzzed from scratch for the same time.
+  echo "fuzz ($model, FMI 3): fuzzing for $seconds s"
+  mkdir -p "$scratch/fmi3-$model"
+  "build-fuzz/fuzz_fmi3_$model" -max_total_time="$seconds" -print_final_stats=1 \
+    -artifact_prefix=build-fuzz/fmi3- "$scratch/fmi3-$model" >"build-fuzz/fuzz3-$model.log" 2>&1 || {
+    tail -60 "build-fuzz/fuzz3-$model.log"
+    echo "fuzz ($model, FMI 3): FAILED, crashing input in build-fuzz/"
+    exit 1
+  }
+  grep -E "^stat::(number_of_executed_units|new_units_added)" "build-fuzz/fuzz3-$model.log" | sed "s/^/    /"
+  echo "fuzz ($model, FMI 3): 0 crashes in $seconds s"
 
   if [ "$keep" = --keep ]; then
     before=$(ls "$corpus" | wc -l)

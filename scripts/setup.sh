@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Prepares a machine for building and testing: C toolchain, CMake and mingw-w64 for the Windows
-# binary (from Debian's packages if missing; with --with-wine also wine, to test that binary), and a
-# Python virtual environment .venv with the pinned packages of requirements.txt.
+# Prepares a machine for building and testing: C toolchain, CMake, mingw-w64 for the Windows
+# binary, gcc-aarch64-linux-gnu and qemu-user for the aarch64-linux FMI 3 binary (from Debian's
+# packages if missing; with --with-wine also wine, to test the Windows binary), and a Python
+# virtual environment .venv with the pinned packages of requirements.txt.
 # Idempotent: a second run installs nothing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,6 +30,10 @@ command -v cc >/dev/null 2>&1 || missing+=(gcc libc6-dev)
 command -v python3 >/dev/null 2>&1 || missing+=(python3)
 # The Windows binary is cross-compiled with mingw-w64; the tests run it under wine (--with-wine).
 command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-x86-64-win32)
+# The aarch64-linux FMI 3 binaries are cross-compiled with Debian's gcc and run under qemu-user.
+command -v aarch64-linux-gnu-gcc >/dev/null 2>&1 || missing+=(gcc-aarch64-linux-gnu)
+[ -f /usr/aarch64-linux-gnu/lib/libc.so.6 ] || missing+=(libc6-dev-arm64-cross)
+command -v qemu-aarch64 >/dev/null 2>&1 || missing+=(qemu-user)
 if [ "${1:-}" = "--with-wine" ]; then
   command -v wine64 >/dev/null 2>&1 || command -v wine >/dev/null 2>&1 ||
     [ -x /usr/lib/wine/wine64 ] || missing+=(wine64)

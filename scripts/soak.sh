@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Soak: one instance through many steps with inputs changing every step (build/soak_fmi2 for
-# AngularKinematics, then build/soak_fmi2_EulerRates; normal optimized build). Prints steps/s and the resident memory at the start and the end; fails on any
+# AngularKinematics, then build/soak_fmi2_EulerRates, then the FMI 3 layer's build/fmi3_abuse_<Model>
+# soak; normal optimized build). Prints steps/s and the resident memory at the start and the end; fails on any
 # failed call, drifted output, logged message, allocation during the run, or memory growth.
 #   bash scripts/soak.sh [steps]      (default 10000000)
 set -euo pipefail
@@ -12,3 +13,5 @@ if [ -z "${AK_SET_UP:-}" ]; then
 fi
 build/soak_fmi2 "$steps"
 build/soak_fmi2_EulerRates "$steps"
+build/fmi3_abuse_AngularKinematics soak "$steps"
+build/fmi3_abuse_EulerRates soak "$steps"

@@ -1,0 +1,57 @@
+/* Little-endian encoding and the CRC-32 of the serialized FMU states: FMI-independent, header
+ * only. The FMI 3 layer uses it; the FMI 2 layer keeps its own identical copy for now, so that
+ * its sources/ and binary stay exactly those of 0.3 (switching it is a follow-up). */
+#ifndef ANGULAR_KINEMATICS_AK_BYTES_H
+#define ANGULAR_KINEMATICS_AK_BYTES_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+_Static_assert(sizeof(double) == 8, "the layouts store IEEE 754 binary64 doubles");
+
+/* CRC-32 of IEEE 802.3 (reflected, polynomial 0xEDB88320), as zlib's crc32. */
+static inline uint32_t ak_crc32(const unsigned char *bytes, size_t n) {
+    uint32_t crc = 0xFFFFFFFFu;
+    for (size_t i = 0; i < n; i++) {
+        crc ^= bytes[i];
+        for (int bit = 0; bit < 8; bit++) {
+            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+        }
+    }
+    return ~crc;
+}
+
+static inline void ak_put_u32(unsigned char *p, uint32_t x) {
+    for (int i = 0; i < 4; i++) {
+        p[i] = (unsigned char)(x >> (8 * i));
+    }
+}
+
+static inline uint32_t ak_get_u32(const unsigned char *p) {
+    uint32_t x = 0;
+    for (int i = 0; i < 4; i++) {
+        x |= (uint32_t)p[i] << (8 * i);
+    }
+    return x;
+}
+
+static inline void ak_put_f64(unsigned char *p, double value) {
+    uint64_t x;
+    memcpy(&x, &value, sizeof x);
+    for (int i = 0; i < 8; i++) {
+        p[i] = (unsigned char)(x >> (8 * i));
+    }
+}
+
+static inline double ak_get_f64(const unsigned char *p) {
+    uint64_t x = 0;
+    for (int i = 0; i < 8; i++) {
+        x |= (uint64_t)p[i] << (8 * i);
+    }
+    double value;
+    memcpy(&value, &x, sizeof value);
+    return value;
+}
+
+#endif

@@ -1,0 +1,78 @@
+/* FMI 3.0 per-element dependencies (providesPerElementDependencies): which elements of which
+ * input arrays each element of an output array depends on, from the model's variable table (the
+ * same dependencies that modelDescription.xml states per array). Element indices are 1-based in
+ * the row-major order of the array, 0 for a scalar (FMI 3, section 2.2.10). */
+#include "fmi3Functions.h"
+#include "fmi3_values.h"
+
+static size_t dependency_count(const ak3_array *array) {
+    size_t n = 0;
+    for (unsigned int e = 0; e < array->n_elements; e++) {
+        n += AK_MODEL.variables[array->first_vr + e].n_dependencies;
+    }
+    return n;
+}
+
+static size_t element_index(const ak3_array *array, unsigned int scalar_vr) {
+    return array->n_dimensions == 0 ? 0 : (size_t)(scalar_vr - array->first_vr) + 1;
+}
+
+fmi3Status fmi3GetNumberOfVariableDependencies(fmi3Instance c, fmi3ValueReference valueReference,
+                                               size_t *nDependencies) {
+    ak3_instance *instance = c;
+    const ak3_function self = AK3_GET_NUMBER_OF_VARIABLE_DEPENDENCIES;
+    if (!ak3_call_allowed(instance, self)) {
+        return fmi3Error;
+    }
+    const ak3_array *array = ak3_array_of_causality(instance, self, "valueReference", 0,
+                                                    valueReference, AK_CAUSALITY_OUTPUT);
+    if (array == NULL || !ak3_given(instance, self, 1, "1", nDependencies, "nDependencies")) {
+        return fmi3Error;
+    }
+    *nDependencies = dependency_count(array);
+    return fmi3OK;
+}
+
+fmi3Status fmi3GetVariableDependencies(fmi3Instance c, fmi3ValueReference dependent,
+                                       size_t elementIndicesOfDependent[],
+                                       fmi3ValueReference independents[],
+                                       size_t elementIndicesOfIndependents[],
+                                       fmi3DependencyKind dependencyKinds[],
+                                       size_t nDependencies) {
+    ak3_instance *instance = c;
+    const ak3_function self = AK3_GET_VARIABLE_DEPENDENCIES;
+    if (!ak3_call_allowed(instance, self)) {
+        return fmi3Error;
+    }
+    const ak3_array *array =
+        ak3_array_of_causality(instance, self, "dependent", 0, dependent, AK_CAUSALITY_OUTPUT);
+    if (array == NULL ||
+        !ak3_given(instance, self, nDependencies, "nDependencies", elementIndicesOfDependent,
+                   "elementIndicesOfDependent") ||
+        !ak3_given(instance, self, nDependencies, "nDependencies", independents, "independents") ||
+        !ak3_given(instance, self, nDependencies, "nDependencies", elementIndicesOfIndependents,
+                   "elementIndicesOfIndependents") ||
+        !ak3_given(instance, self, nDependencies, "nDependencies", dependencyKinds,
+                   "dependencyKinds")) {
+        return fmi3Error;
+    }
+    if (nDependencies != dependency_count(array)) {
+        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                "fmi3GetVariableDependencies: nDependencies = %zu, but %s has %zu "
+                "(fmi3GetNumberOfVariableDependencies)",
+                nDependencies, array->name, dependency_count(array));
+        return fmi3Error;
+    }
+    size_t k = 0;
+    for (unsigned int e = 0; e < array->n_elements; e++) {
+        const ak_variable *element = &AK_MODEL.variables[array->first_vr + e];
+        for (size_t d = 0; d < element->n_dependencies; d++, k++) {
+            const ak3_array *input = &AK3_ARRAYS[element->dependencies[d]];
+            elementIndicesOfDependent[k] = element_index(array, array->first_vr + e);
+            independents[k] = input->first_vr;
+            elementIndicesOfIndependents[k] = element_index(input, element->dependencies[d]);
+            dependencyKinds[k] = fmi3Dependent;
+        }
+    }
+    return fmi3OK;
+}

@@ -1,0 +1,76 @@
+/* FMI 3 instance initial condition and the lazy evaluation of the outputs. */
+#include "fmi3_instance.h"
+
+#include "fmi3_logging.h"
+
+/* The model's messages go out through the instance's logger, with the FMI 3 status. */
+static void log_for_model(void *owner, ak_log_category category, ak_status status,
+                          const char *message) {
+    static const fmi3Status STATUS[] = {fmi3OK, fmi3Warning, fmi3Discard, fmi3Error};
+    ak3_log((const ak3_instance *)owner, category, STATUS[status], "%s", message);
+}
+
+void ak3_instance_reset(ak3_instance *instance) {
+    for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
+        /* Errors and warnings are reported unless switched off; the call trace only on request. */
+        instance->log_enabled[category] =
+            category != AK_LOG_CALLS || instance->logging_on_at_instantiation;
+    }
+    instance->data.log = log_for_model;
+    instance->data.owner = instance;
+    instance->state = AK3_STATE_INSTANTIATED;
+    instance->time = 0.0;
+    instance->stop_time_defined = false;
+    instance->stop_time = 0.0;
+    for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
+        const ak_variable *variable = ak_variable_of((unsigned int)vr);
+        instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
+    }
+    for (int k = 0; k < AK_MAX_INPUTS; k++) {
+        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+            instance->data.input_derivatives[k][n] = 0.0;
+        }
+    }
+    instance->data.any_input_derivative = false;
+    instance->outputs_stale = true;
+    instance->lazy_stale = true;
+    instance->evaluation_status = AK_EVAL_OK;
+    instance->evaluations = 0;
+}
+
+ak_eval_status ak3_instance_update_outputs(ak3_instance *instance) {
+    if (!instance->outputs_stale) {
+        return instance->evaluation_status;
+    }
+    instance->evaluation_status = AK_MODEL.evaluate(&instance->data);
+    instance->outputs_stale = false;
+    instance->lazy_stale = true;
+    instance->evaluations++;
+    if (ak3_log_on(instance, AK_LOG_CALLS)) {
+        ak3_log(instance, AK_LOG_CALLS, fmi3OK, "kinematics evaluated (evaluation %lu)",
+                instance->evaluations);
+    }
+    return instance->evaluation_status;
+}
+
+ak_eval_status ak3_instance_update_all_outputs(ak3_instance *instance) {
+    const ak_eval_status status = ak3_instance_update_outputs(instance);
+    if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
+        AK_MODEL.evaluate_lazy(&instance->data);
+        instance->lazy_stale = false;
+    }
+    return status;
+}
+
+fmi3Status ak3_read_status(ak_eval_status status) {
+    switch (status) {
+    case AK_EVAL_OK:
+        return fmi3OK;
+    case AK_EVAL_WARNING:
+        return fmi3Warning;
+    case AK_EVAL_FAILED:
+    default:
+        /* As in FMI 2: the function is outside its domain, the instance stays usable. */
+        return fmi3Discard;
+    }
+}

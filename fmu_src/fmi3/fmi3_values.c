@@ -1,0 +1,317 @@
+/* FMI 3.0 getters and setters. A value reference names a whole array (theta: 3 values, R: 9,
+ * row-major) and nValues must be exactly the number of elements of all the value references
+ * given. Every call checks all of its arguments before it touches a value, so a rejected call
+ * changes nothing. Float64 holds the Real variables (and the independent variable time, which
+ * can be read only); Int64 the Enumerations (FMI 3, section 2.4.7.1); no variable has another
+ * type (fmi3_unsupported.c). */
+#include <math.h>
+
+#include "fmi3Functions.h"
+#include "fmi3_values.h"
+
+bool ak3_given(const ak3_instance *instance, ak3_function function, size_t n,
+               const char *count_name, const void *pointer, const char *pointer_name) {
+    if (n > 0 && pointer == NULL) {
+        ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: %s is NULL with %s = %zu",
+                ak3_function_name(function), pointer_name, count_name, n);
+        return false;
+    }
+    return true;
+}
+
+static const char *type_name(ak_type type) {
+    return type == AK_TYPE_INTEGER ? "Enumeration (fmi3GetInt64/fmi3SetInt64)"
+                                   : "Float64 (fmi3GetFloat64/fmi3SetFloat64)";
+}
+
+/* The array of a value reference whose variable has the function's type; NULL after logging. */
+static const ak3_array *array_of_type(const ak3_instance *instance, ak3_function function,
+                                      size_t index, unsigned int vr, ak_type type) {
+    const ak3_array *array = ak3_array_of(vr);
+    if (array == NULL) {
+        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                "%s: valueReferences[%zu] = %u is not a value reference of this FMU's FMI 3 "
+                "variables (docs/fmi3_variables.md)",
+                ak3_function_name(function), index, vr);
+        return NULL;
+    }
+    const ak_variable *variable = &AK_MODEL.variables[vr]; /* known: an array */
+    if (variable->type != type) {
+        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                "%s: valueReferences[%zu] = %u is %s, of type %s", ak3_function_name(function),
+                index, vr, array->name, type_name(variable->type));
+        return NULL;
+    }
+    return array;
+}
+
+const ak3_array *ak3_array_of_causality(const ak3_instance *instance, ak3_function function,
+                                        const char *list_name, size_t index, unsigned int vr,
+                                        ak_causality causality) {
+    const ak3_array *array = ak3_array_of(vr);
+    if (array == NULL) {
+        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                "%s: %s[%zu] = %u is not a value reference of this FMU's FMI 3 variables",
+                ak3_function_name(function), list_name, index, vr);
+        return NULL;
+    }
+    const ak_causality found = AK_MODEL.variables[vr].causality;
+    if (found != causality) {
+        ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
+                ak3_function_name(function), list_name, index, vr, array->name,
+                found == AK_CAUSALITY_PARAMETER ? "a" : "an", ak_causality_name(found),
+                ak_causality_name(causality));
+        return NULL;
+    }
+    return array;
+}
+
+static const char *name_of_vr(unsigned int vr) {
+    if (vr == AK3_TIME_VALUE_REFERENCE) {
+        return "time";
+    }
+    const ak3_array *array = ak3_array_of(vr);
+    return array != NULL ? array->name : "?";
+}
+
+bool ak3_count_matches(const ak3_instance *instance, ak3_function function, const char *count_name,
+                       size_t n, size_t total, const unsigned int vr[], size_t n_vr) {
+    if (n == total) {
+        return true;
+    }
+    ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+            "%s: %s = %zu, but the %zu value references (%s%s%s) have %zu elements (too %s); "
+            "nothing read or written",
+            ak3_function_name(function), count_name, n, n_vr, n_vr > 0 ? name_of_vr(vr[0]) : "",
+            n_vr > 1 ? " .. " : "", n_vr > 1 ? name_of_vr(vr[n_vr - 1]) : "", total,
+            n < total ? "few" : "many");
+    return false;
+}
+
+/* A parameter may be set only in Instantiated and Initialization Mode (variability fixed), to a
+ * value the model accepts. */
+static bool parameter_settable(const ak3_instance *instance, ak3_function function, size_t index,
+                               const ak_variable *variable, double value) {
+    if ((instance->state & (AK3_STATE_INSTANTIATED | AK3_STATE_INITIALIZATION_MODE)) == 0) {
+        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                "%s: %s (valueReferences[%zu] = %u) is a parameter of variability fixed: it can "
+                "be set only in Instantiated and Initialization Mode, not in %s; no value set",
+                ak3_function_name(function), variable->name, index, variable->value_reference,
+                ak3_state_name(instance->state));
+        return false;
+    }
+    const char *why = AK_MODEL.check_parameter(variable, value);
+    if (why != NULL) {
+        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                "%s: %s = %.17g (valueReferences[%zu] = %u) %s; no value set",
+                ak3_function_name(function), variable->name, value, index,
+                variable->value_reference, why);
+        return false;
+    }
+    return true;
+}
+
+static void store(ak3_instance *instance, ak3_function function, bool trace, unsigned int vr,
+                  double value) {
+    if (trace) {
+        ak3_log(instance, AK_LOG_CALLS, fmi3OK, "%s: %s = %.17g", ak3_function_name(function),
+                AK_MODEL.variables[vr].name, value);
+    }
+    /* Only a real change makes the outputs stale: importers often set unchanged inputs. */
+    if (instance->data.values[vr] != value) {
+        instance->data.values[vr] = value;
+        ak3_instance_inputs_changed(instance);
+    }
+}
+
+static bool arguments_given(const ak3_instance *instance, ak3_function function, size_t nvr,
+                            const void *vr, size_t n_values, const void *values) {
+    return ak3_given(instance, function, nvr, "nValueReferences", vr, "valueReferences") &&
+           ak3_given(instance, function, n_values, "nValues", values, "values");
+}
+
+fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                          fmi3Float64 values[], size_t nValues) {
+    ak3_instance *instance = c;
+    const ak3_function self = AK3_GET_FLOAT64;
+    if (!ak3_call_allowed(instance, self) ||
+        !arguments_given(instance, self, nvr, vr, nValues, values)) {
+        return fmi3Error;
+    }
+    bool main = false, lazy = false;
+    size_t total = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
+            total += 1;
+            continue;
+        }
+        const ak3_array *array = array_of_type(instance, self, i, vr[i], AK_TYPE_REAL);
+        if (array == NULL) {
+            return fmi3Error;
+        }
+        const ak_variable *variable = &AK_MODEL.variables[vr[i]];
+        if (variable->causality == AK_CAUSALITY_OUTPUT) {
+            main = true;
+            lazy = lazy || variable->group == AK_GROUP_LAZY;
+        }
+        total += array->n_elements;
+    }
+    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+        return fmi3Error;
+    }
+    fmi3Status status = fmi3OK;
+    if (main) {
+        status = ak3_read_status(lazy ? ak3_instance_update_all_outputs(instance)
+                                      : ak3_instance_update_outputs(instance));
+    }
+    size_t k = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
+            values[k++] = instance->time;
+            continue;
+        }
+        const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
+        for (unsigned int e = 0; e < n; e++) {
+            values[k++] = instance->data.values[vr[i] + e];
+        }
+    }
+    return status;
+}
+
+fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                          const fmi3Float64 values[], size_t nValues) {
+    ak3_instance *instance = c;
+    const ak3_function self = AK3_SET_FLOAT64;
+    if (!ak3_call_allowed(instance, self) ||
+        !arguments_given(instance, self, nvr, vr, nValues, values)) {
+        return fmi3Error;
+    }
+    size_t total = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
+            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                    "fmi3SetFloat64: valueReferences[%zu] = %u is time, the independent "
+                    "variable, which cannot be set; no value set",
+                    i, vr[i]);
+            return fmi3Error;
+        }
+        const ak3_array *array = array_of_type(instance, self, i, vr[i], AK_TYPE_REAL);
+        if (array == NULL) {
+            return fmi3Error;
+        }
+        const ak_variable *variable = &AK_MODEL.variables[vr[i]];
+        if (variable->causality == AK_CAUSALITY_OUTPUT) {
+            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                    "fmi3SetFloat64: valueReferences[%zu] = %u is %s, an output: only inputs and "
+                    "parameters can be set; no value set",
+                    i, vr[i], array->name);
+            return fmi3Error;
+        }
+        total += array->n_elements;
+    }
+    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+        return fmi3Error;
+    }
+    size_t k = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        const bool parameter = AK_MODEL.variables[vr[i]].causality == AK_CAUSALITY_PARAMETER;
+        for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++, k++) {
+            if (!isfinite(values[k])) {
+                ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                        "fmi3SetFloat64: %s = %g (values[%zu], valueReferences[%zu] = %u) is not "
+                        "finite; no value set",
+                        AK_MODEL.variables[vr[i] + e].name, values[k], k, i, vr[i]);
+                return fmi3Error;
+            }
+            if (parameter &&
+                !parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i] + e], values[k])) {
+                return fmi3Error;
+            }
+        }
+    }
+    if (ak3_log_on(instance, AK_LOG_CALLS)) {
+        k = 0;
+        for (size_t i = 0; i < nvr; i++) {
+            for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++) {
+                store(instance, self, true, vr[i] + e, values[k++]);
+            }
+        }
+        return fmi3OK;
+    }
+    /* The hot path of every communication point. As store() (and the FMI 2 layer): only a value
+     * that compares different is written and makes the outputs stale, so -0.0 over 0.0 is not
+     * written and both layers evaluate the same bits. */
+    bool changed = false;
+    k = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        double *target = &instance->data.values[vr[i]];
+        const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
+        for (unsigned int e = 0; e < n; e++, k++) {
+            if (target[e] != values[k]) {
+                target[e] = values[k];
+                changed = true;
+            }
+        }
+    }
+    if (changed) {
+        ak3_instance_inputs_changed(instance);
+    }
+    return fmi3OK;
+}
+
+fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                        fmi3Int64 values[], size_t nValues) {
+    ak3_instance *instance = c;
+    const ak3_function self = AK3_GET_INT64;
+    if (!ak3_call_allowed(instance, self) ||
+        !arguments_given(instance, self, nvr, vr, nValues, values)) {
+        return fmi3Error;
+    }
+    size_t total = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        const ak3_array *array = array_of_type(instance, self, i, vr[i], AK_TYPE_INTEGER);
+        if (array == NULL) {
+            return fmi3Error;
+        }
+        total += array->n_elements;
+    }
+    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+        return fmi3Error;
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        values[i] = (fmi3Int64)instance->data.values[vr[i]]; /* Enumerations are scalars */
+    }
+    return fmi3OK;
+}
+
+fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                        const fmi3Int64 values[], size_t nValues) {
+    ak3_instance *instance = c;
+    const ak3_function self = AK3_SET_INT64;
+    if (!ak3_call_allowed(instance, self) ||
+        !arguments_given(instance, self, nvr, vr, nValues, values)) {
+        return fmi3Error;
+    }
+    size_t total = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        const ak3_array *array = array_of_type(instance, self, i, vr[i], AK_TYPE_INTEGER);
+        if (array == NULL) {
+            return fmi3Error;
+        }
+        total += array->n_elements;
+    }
+    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+        return fmi3Error;
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        /* An Int64 far out of range becomes a large double, which check_parameter refuses. */
+        if (!parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i]], (double)values[i])) {
+            return fmi3Error;
+        }
+    }
+    const bool trace = ak3_log_on(instance, AK_LOG_CALLS);
+    for (size_t i = 0; i < nvr; i++) {
+        store(instance, self, trace, vr[i], (double)values[i]);
+    }
+    return fmi3OK;
+}

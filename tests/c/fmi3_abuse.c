@@ -1,0 +1,285 @@
+/* Abuse tests of the FMI 3 layer, linked with one model's FMI 3 sources (cmake/abuse_tests_fmi3.cmake),
+ * for the sanitizer, valgrind and soak runs (scripts/check_sanitizers.sh, scripts/soak.sh):
+ *
+ *   fmi3_abuse calls               every FMI 3 function with a NULL instance, and with a live
+ *                                  instance and NULL pointers or absurd sizes: no crash, fmi3Error
+ *   fmi3_abuse instances N T STEPS N instances over T threads, each stepping with its own
+ *                                  sequence and inputs, FMU states got, serialized, restored; each
+ *                                  one's output bits equal a lone rerun's
+ *   fmi3_abuse soak STEPS          one instance, inputs changing every step: every call fmi3OK
+ *                                  (or a warning/discard the model explains), no error logged
+ *
+ * Exit status 0 on success; every failure is printed. */
+#include <math.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi3Functions.h"
+#include "model.h"
+
+static int failures = 0;
+#define CHECK(condition, ...)                                                                     \
+    do {                                                                                          \
+        if (!(condition)) {                                                                       \
+            fprintf(stderr, "FAILED %s:%d: ", __FILE__, __LINE__);                               \
+            fprintf(stderr, __VA_ARGS__);                                                         \
+            fprintf(stderr, "\n");                                                                \
+            __atomic_add_fetch(&failures, 1, __ATOMIC_RELAXED);                                   \
+        }                                                                                         \
+    } while (0)
+
+typedef struct {
+    int errors;
+    int messages;
+} log_counts;
+
+static void logger(fmi3InstanceEnvironment environment, fmi3Status status, fmi3String category,
+                   fmi3String message) {
+    (void)category;
+    (void)message;
+    log_counts *counts = environment;
+    if (counts != NULL) {
+        counts->messages++;
+        counts->errors += status == fmi3Error;
+    }
+}
+
+static fmi3Instance new_instance(log_counts *counts) {
+    return fmi3InstantiateCoSimulation("abuse", AK_MODEL.guid, NULL, fmi3False, fmi3False,
+                                       fmi3False, fmi3False, NULL, 0, counts, logger, NULL);
+}
+
+/* The inputs of an instance at a step: exact binary fractions in [-2, 2). */
+static void inputs_at(unsigned int instance, unsigned int step, double u[9]) {
+    uint64_t x = 0x9e3779b97f4a7c15ULL * (instance + 1) ^ (0xbf58476d1ce4e5b9ULL * (step + 1));
+    for (int k = 0; k < 9; k++) {
+        x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+        u[k] = (double)(x >> 11) * (4.0 / 9007199254740992.0) - 2.0;
+    }
+}
+
+static int64_t sequence_of(unsigned int instance) {
+    return (int64_t)(instance % 24) + 1;
+}
+
+/* Runs an instance through its steps; returns a digest of every output bit. */
+static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_states) {
+    log_counts counts = {0, 0};
+    fmi3Instance instance = new_instance(&counts);
+    CHECK(instance != NULL, "instantiate %u", id);
+    if (instance == NULL) {
+        return 0;
+    }
+    const int64_t sequence = sequence_of(id);
+    /* The sequence parameter (70 AngularKinematics, 22 EulerRates), found by name. */
+    fmi3ValueReference vr_sequence = 0;
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        const ak_variable *v = ak_variable_of((unsigned int)vr);
+        if (v != NULL && strcmp(v->name, "sequence") == 0) {
+            vr_sequence = (fmi3ValueReference)vr;
+        }
+    }
+    CHECK(fmi3SetInt64(instance, &vr_sequence, 1, &sequence, 1) == fmi3OK, "set sequence");
+    CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK, "enter");
+    CHECK(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
+    const fmi3ValueReference inputs[3] = {0, 3, 6};
+    fmi3ValueReference outputs[AK_MAX_VARIABLES];
+    size_t n_outputs = 0;
+    for (int vr = AK_MODEL.n_inputs; vr < AK_MODEL.n_value_references; vr++) {
+        const ak_variable *v = ak_variable_of((unsigned int)vr);
+        if (v != NULL && v->causality == AK_CAUSALITY_OUTPUT) {
+            outputs[n_outputs++] = (fmi3ValueReference)vr;
+        }
+    }
+    /* FMI 3 addresses arrays: keep only the first element of each (consecutive runs). */
+    fmi3ValueReference arrays[AK_MAX_VARIABLES];
+    size_t n_arrays = 0;
+    for (size_t i = 0; i < n_outputs; i++) {
+        const char *name = ak_variable_of(outputs[i])->name;
+        const char *bracket = strchr(name, '[');
+        if (bracket == NULL || strcmp(bracket, "[1]") == 0 || strcmp(bracket, "[1,1]") == 0) {
+            arrays[n_arrays++] = outputs[i];
+        }
+    }
+    uint64_t digest = 1469598103934665603ULL;
+    double t = 0.0;
+    fmi3FMUState state = NULL;
+    for (unsigned int step = 0; step < steps; step++) {
+        double u[9], y[AK_MAX_VARIABLES];
+        inputs_at(id, step, u);
+        if (AK_MODEL.evaluate_in_step) {
+            u[1] = 0.5 * u[1]; /* EulerRates: keep theta[2] in (-1, 1), away from singularities */
+        }
+        CHECK(fmi3SetFloat64(instance, inputs, 3, u, 9) == fmi3OK, "set %u", step);
+        fmi3Boolean event, terminate, early;
+        double last;
+        const fmi3Status s = fmi3DoStep(instance, t, 0.001, fmi3True, &event, &terminate, &early, &last);
+        CHECK(s == fmi3OK || s == fmi3Warning, "step %u: %d", step, (int)s);
+        t = last;
+        const fmi3Status g = fmi3GetFloat64(instance, arrays, n_arrays, y, n_outputs);
+        CHECK(g == fmi3OK || g == fmi3Warning, "get %u: %d", step, (int)g);
+        for (size_t i = 0; i < n_outputs; i++) {
+            uint64_t bits;
+            memcpy(&bits, &y[i], sizeof bits);
+            digest = (digest ^ bits) * 1099511628211ULL;
+        }
+        if (with_states && step % 7 == 3) {
+            /* Get, serialize, deserialize, set: the instance continues from the same point. */
+            CHECK(fmi3GetFMUState(instance, &state) == fmi3OK, "get state");
+            size_t size = 0;
+            CHECK(fmi3SerializedFMUStateSize(instance, state, &size) == fmi3OK, "size");
+            unsigned char *bytes = malloc(size);
+            CHECK(bytes != NULL && fmi3SerializeFMUState(instance, state, bytes, size) == fmi3OK,
+                  "serialize");
+            fmi3FMUState copy = NULL;
+            CHECK(fmi3DeserializeFMUState(instance, bytes, size, &copy) == fmi3OK, "deserialize");
+            CHECK(fmi3SetFMUState(instance, copy) == fmi3OK, "set state");
+            CHECK(fmi3FreeFMUState(instance, &copy) == fmi3OK && copy == NULL, "free state");
+            free(bytes);
+        }
+    }
+    /* The last state is left for fmi3FreeInstance to free. */
+    CHECK(fmi3Terminate(instance) == fmi3OK, "terminate");
+    fmi3FreeInstance(instance);
+    CHECK(counts.errors == 0, "instance %u logged %d errors", id, counts.errors);
+    return digest;
+}
+
+typedef struct {
+    unsigned int first, count, steps;
+    uint64_t *digests;
+} work;
+
+static void *run_work(void *argument) {
+    work *w = argument;
+    for (unsigned int i = 0; i < w->count; i++) {
+        w->digests[w->first + i] = run_instance(w->first + i, w->steps, true);
+    }
+    return NULL;
+}
+
+static void instances(unsigned int n, unsigned int threads, unsigned int steps) {
+    uint64_t *digests = calloc(n, sizeof *digests);
+    pthread_t *ids = calloc(threads, sizeof *ids);
+    work *works = calloc(threads, sizeof *works);
+    if (digests == NULL || ids == NULL || works == NULL) {
+        CHECK(0, "out of memory");
+    } else {
+        for (unsigned int k = 0; k < threads; k++) {
+            works[k] = (work){k * n / threads, (k + 1) * n / threads - k * n / threads, steps,
+                              digests};
+            CHECK(pthread_create(&ids[k], NULL, run_work, &works[k]) == 0, "thread");
+        }
+        for (unsigned int k = 0; k < threads; k++) {
+            pthread_join(ids[k], NULL);
+        }
+        for (unsigned int i = 0; i < n; i++) {
+            CHECK(digests[i] == run_instance(i, steps, false), "instance %u differs from its lone rerun", i);
+        }
+        printf("fmi3_abuse instances: %u instances x %u steps on %u threads, each bit-identical to a lone rerun\n",
+               n, steps, threads);
+    }
+    free(digests);
+    free(ids);
+    free(works);
+}
+
+/* Every function with a NULL instance: fmi3Error (or nothing), no crash. */
+static void null_instance(void) {
+    double d[9] = {0};
+    fmi3ValueReference vr[1] = {0};
+    size_t n = 0;
+    fmi3Boolean b = fmi3False;
+    fmi3FMUState s = NULL;
+    CHECK(fmi3SetFloat64(NULL, vr, 1, d, 3) == fmi3Error, "set");
+    CHECK(fmi3GetFloat64(NULL, vr, 1, d, 3) == fmi3Error, "get");
+    CHECK(fmi3DoStep(NULL, 0, 1, fmi3True, &b, &b, &b, d) == fmi3Error, "step");
+    CHECK(fmi3GetFMUState(NULL, &s) == fmi3Error, "state");
+    CHECK(fmi3GetNumberOfContinuousStates(NULL, &n) == fmi3Error, "states");
+    CHECK(fmi3EnterConfigurationMode(NULL) == fmi3Error, "configuration");
+    CHECK(fmi3GetClock(NULL, vr, 1, &b) == fmi3Error, "clock");
+    CHECK(fmi3Reset(NULL) == fmi3Error, "reset");
+    CHECK(fmi3Terminate(NULL) == fmi3Error, "terminate");
+    fmi3FreeInstance(NULL);
+    CHECK(fmi3InstantiateCoSimulation(NULL, AK_MODEL.guid, NULL, 0, 0, 0, 0, NULL, 0, NULL, NULL,
+                                      NULL) == NULL, "no name");
+    CHECK(fmi3InstantiateModelExchange("x", NULL, NULL, 0, 0, NULL, NULL) == NULL, "no token");
+}
+
+/* A live instance and NULL pointers or absurd counts: fmi3Error and one logged error each. */
+static void null_pointers(void) {
+    log_counts counts = {0, 0};
+    fmi3Instance instance = new_instance(&counts);
+    fmi3ValueReference vr[2] = {0, 3};
+    double d[9] = {0};
+    size_t n;
+    CHECK(fmi3SetFloat64(instance, NULL, 2, d, 6) == fmi3Error, "vr NULL");
+    CHECK(fmi3SetFloat64(instance, vr, 2, NULL, 6) == fmi3Error, "values NULL");
+    CHECK(fmi3SetFloat64(instance, vr, 2, d, SIZE_MAX) == fmi3Error, "SIZE_MAX");
+    CHECK(fmi3GetFloat64(instance, vr, 2, d, 0) == fmi3Error, "nValues 0");
+    CHECK(fmi3GetFMUState(instance, NULL) == fmi3Error, "state NULL");
+    CHECK(fmi3SerializedFMUStateSize(instance, NULL, &n) == fmi3Error, "size of NULL");
+    CHECK(fmi3DeserializeFMUState(instance, (const fmi3Byte *)"x", 1, NULL) == fmi3Error, "NULL out");
+    CHECK(fmi3SetDebugLogging(instance, fmi3True, 3, NULL) == fmi3Error, "categories NULL");
+    CHECK(fmi3GetNumberOfVariableDependencies(instance, 0, NULL) == fmi3Error, "of an input");
+    CHECK(fmi3EnterInitializationMode(instance, fmi3True, -1.0, 0, fmi3False, 0) == fmi3Error, "tol");
+    CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3True, -1.0) == fmi3Error, "stop");
+    CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, NAN, fmi3False, 0) == fmi3Error, "nan");
+    CHECK(counts.errors == 12, "%d errors logged, expected 12", counts.errors);
+    fmi3FreeInstance(instance);
+}
+
+static void soak(unsigned long steps) {
+    log_counts counts = {0, 0};
+    fmi3Instance instance = new_instance(&counts);
+    CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK, "enter");
+    CHECK(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
+    const fmi3ValueReference inputs[3] = {0, 3, 6};
+    const fmi3ValueReference first_outputs[4] = {9, 12, 15, 18};
+    double t = 0.0, y[12];
+    for (unsigned long step = 0; step < steps; step++) {
+        double u[9];
+        inputs_at(7, (unsigned int)step, u);
+        u[1] *= 0.5;
+        fmi3Boolean b;
+        double last;
+        if (fmi3SetFloat64(instance, inputs, 3, u, 9) != fmi3OK ||
+            fmi3DoStep(instance, t, 0.001, fmi3True, &b, &b, &b, &last) > fmi3Warning ||
+            fmi3GetFloat64(instance, first_outputs, 4, y, 12) > fmi3Warning) {
+            CHECK(0, "step %lu failed", step);
+            break;
+        }
+        t = last;
+        for (int k = 0; k < 12; k++) {
+            if (!isfinite(y[k])) {
+                CHECK(0, "step %lu: output %d = %g", step, k, y[k]);
+                break;
+            }
+        }
+    }
+    CHECK(counts.errors == 0, "%d errors logged", counts.errors);
+    fmi3FreeInstance(instance);
+    printf("fmi3_abuse soak (%s): %lu steps, 0 errors\n", AK_MODEL.model_identifier, steps);
+}
+
+int main(int argc, char **argv) {
+    const char *mode = argc > 1 ? argv[1] : "calls";
+    if (strcmp(mode, "calls") == 0) {
+        null_instance();
+        null_pointers();
+        printf("fmi3_abuse calls (%s): NULL instance and NULL pointers refused\n",
+               AK_MODEL.model_identifier);
+    } else if (strcmp(mode, "instances") == 0 && argc == 5) {
+        instances((unsigned int)atoi(argv[2]), (unsigned int)atoi(argv[3]),
+                  (unsigned int)atoi(argv[4]));
+    } else if (strcmp(mode, "soak") == 0 && argc == 3) {
+        soak(strtoul(argv[2], NULL, 10));
+    } else {
+        fprintf(stderr, "usage: fmi3_abuse calls | instances N THREADS STEPS | soak STEPS\n");
+        return 2;
+    }
+    return failures == 0 ? 0 : 1;
+}

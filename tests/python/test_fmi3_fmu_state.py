@@ -1,0 +1,153 @@
+"""FMI 3 FMU state (canGetAndSetFMUState, canSerializeFMUState): a state got, or serialized and
+deserialized (also into another instance), brings back time, inputs, parameters and so the
+outputs bit for bit; the serialized form is self-contained, versioned and checksummed (660 bytes
+AngularKinematics, 292 EulerRates), and damaged, truncated, foreign (an FMI 2 state, the other
+model's) or freed states are refused with a message, changing nothing."""
+import ctypes
+
+import numpy as np
+import pytest
+
+from conftest import Instance
+from fmi3_support import ERROR, OK, Instance3
+
+SIZES = {"AngularKinematics": 660, "EulerRates": 292}
+
+
+def get_state(instance):
+    state = ctypes.c_void_p()
+    assert instance.call("fmi3GetFMUState", ctypes.byref(state)) == OK
+    return state
+
+
+def serialize(instance, state):
+    size = ctypes.c_size_t()
+    assert instance.call("fmi3SerializedFMUStateSize", state, ctypes.byref(size)) == OK
+    buffer = (ctypes.c_ubyte * size.value)()
+    assert instance.call("fmi3SerializeFMUState", state, buffer, size.value) == OK
+    return bytes(buffer)
+
+
+def deserialize(instance, data):
+    state = ctypes.c_void_p()
+    buffer = (ctypes.c_ubyte * max(len(data), 1)).from_buffer_copy(data or b"\0")
+    status = instance.call("fmi3DeserializeFMUState", buffer, len(data), ctypes.byref(state))
+    return status, state
+
+
+def everything(instance):
+    values = instance.get(instance.inputs() + instance.outputs())
+    return np.concatenate(list(values.values())).view(np.uint64).tolist()
+
+
+def started(model, sequence=11):
+    instance = Instance3(model)
+    first = "theta_dot" if model == "AngularKinematics" else "omega"
+    instance.initialize(parameters={"sequence": sequence},
+                        inputs={"theta": [0.4, 0.3, -0.2], first: [1.0, 2.0, 3.0]})
+    assert instance.do_step(0.0, 0.25)[0] == OK
+    return instance, first
+
+
+@pytest.mark.parametrize("model", ["AngularKinematics", "EulerRates"])
+def test_get_set_and_serialize_restore_bit_for_bit(model, report):
+    instance, first = started(model)
+    other = Instance3(model)
+    try:
+        state = get_state(instance)
+        saved = everything(instance)
+        data = serialize(instance, state)
+        assert len(data) == SIZES[model] and data[:8] == b"AKinFMU3"
+        # Move on: new inputs, a step.
+        assert instance.set({"theta": [1.0, -1.0, 0.5], first: [0.0, 0.0, 0.0]}) == OK
+        assert instance.do_step(0.25, 0.5) == (OK, 0.75)
+        assert everything(instance) != saved
+        assert instance.call("fmi3SetFMUState", state) == OK
+        assert everything(instance) == saved
+        assert instance.do_step(0.25, 0.125) == (OK, 0.375)  # the time came back too
+        # Into a fresh instance (still Instantiated) through the bytes.
+        status, copy = deserialize(other, data)
+        assert status == OK
+        assert other.call("fmi3SetFMUState", copy) == OK
+        assert everything(other) == saved
+        assert other.do_step(0.25, 0.125)[0] == OK
+        # Reuse of a state object: fmi3GetFMUState into the same pointer.
+        assert instance.call("fmi3GetFMUState", ctypes.byref(state)) == OK
+        assert instance.call("fmi3FreeFMUState", ctypes.byref(state)) == OK and not state.value
+        assert other.call("fmi3FreeFMUState", ctypes.byref(copy)) == OK
+        report(f"{model}: serialized FMI 3 state {len(data)} bytes; restored bit for bit")
+    finally:
+        instance.free()
+        other.free()
+
+
+def damaged(data, model):
+    flipped = bytearray(data)
+    flipped[100] ^= 1
+    wrong_version = bytearray(data)
+    wrong_version[8] = 9
+    return [
+        ("one bit flipped", bytes(flipped), "CRC-32"),
+        ("truncated", data[:-1], "truncated or extended"),
+        ("extended", data + b"\0", "truncated or extended"),
+        ("empty", b"", "too short"),
+        ("another version", bytes(wrong_version), "format version 9"),
+        ("another magic", b"XXXXXXXX" + data[8:], "wrong magic"),
+    ]
+
+
+@pytest.mark.parametrize("model", ["AngularKinematics", "EulerRates"])
+def test_damaged_or_foreign_states_refused_and_nothing_changed(model, unzipdir, model_description):
+    instance, _ = started(model)
+    other_model = Instance3("EulerRates" if model == "AngularKinematics" else "AngularKinematics")
+    fmi2 = Instance(unzipdir, model_description)
+    try:
+        data = serialize(instance, get_state(instance))
+        saved = everything(instance)
+        foreign = serialize(other_model, get_state(other_model))
+        fmi2.initialize()
+        fmi2_bytes = fmi2.fmu.serializeFMUstate(fmi2.fmu.getFMUstate())
+        cases = damaged(data, model) + [("the other model's", foreign, "bytes long"),
+                                        ("an FMI 2 state", bytes(fmi2_bytes), "wrong magic")]
+        for name, bad, words in cases:
+            n = len(instance.errors())
+            status, state = deserialize(instance, bad)
+            assert status == ERROR and not state.value, name
+            assert words in instance.errors()[n], (name, instance.errors()[n])
+            assert instance.errors()[n].startswith("fmi3DeserializeFMUState")
+        assert everything(instance) == saved
+        # A pointer that is not a live state of this instance.
+        state = get_state(instance)
+        assert instance.call("fmi3FreeFMUState", ctypes.byref(state)) == OK
+        stale = ctypes.c_void_p(id(data))
+        for function in ("fmi3SetFMUState",):
+            assert instance.call(function, stale) == ERROR
+            assert "not an FMU state made by" in instance.errors()[-1]
+        assert instance.call("fmi3SetFMUState", None) == ERROR
+        other_state = get_state(other_model)
+        assert instance.call("fmi3SetFMUState", other_state) == ERROR
+        assert everything(instance) == saved
+    finally:
+        instance.free()
+        other_model.free()
+        fmi2.free()
+
+
+def test_model_exchange_state_not_accepted_by_co_simulation():
+    me = Instance3("AngularKinematics", fmi_type="ModelExchange")
+    cs = Instance3("AngularKinematics")
+    try:
+        data = serialize(me, get_state(me))
+        status, _ = deserialize(cs, data)
+        assert status == ERROR and "model-exchange instance" in cs.errors()[-1]
+    finally:
+        me.free()
+        cs.free()
+
+
+def test_states_not_freed_are_freed_with_the_instance():
+    """Runs under valgrind/ASan in the abuse runs: no leak when the importer forgets states."""
+    instance, _ = started("AngularKinematics")
+    for _ in range(5):
+        get_state(instance)
+    instance.free()

@@ -1,0 +1,128 @@
+"""The FMI 3.0 FMUs as files: fmpy validates them with no message; their variables are the
+arrays of the model descriptions with the FMI 2 names (no element suffix), value references
+(the first element's), units and display units; sequence is a fixed Enumeration parameter;
+<ModelStructure> lists every output with the union of its elements' FMI 2 dependencies; the FMU
+holds the three platforms' binaries, sources/ that fmpy compiles into a binary computing the same
+bits, documentation/index.html without outside links and terminalsAndIcons/icon.png."""
+import math
+import pathlib
+import re
+import shutil
+import xml.etree.ElementTree as ET
+import zipfile
+
+import numpy as np
+import pytest
+from fmpy import read_model_description, simulate_fmu
+from fmpy.build import build_platform_binary
+from fmpy.validation import validate_fmu
+
+from codegen.models import load
+from fmi3_support import MODELS, fmu3_path, unzipped
+
+FMI2_TYPES = {"Angle": ("rad", "deg"), "AngularVelocity": ("rad/s", "deg/s"),
+              "AngularAcceleration": ("rad/s2", "deg/s2")}
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_fmpy_validates_with_no_message(model):
+    assert validate_fmu(str(fmu3_path(model))) == []
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_variables_are_the_fmi2_arrays(model):
+    md = read_model_description(str(fmu3_path(model)))
+    assert md.fmiVersion == "3.0" and md.coSimulation and md.modelExchange
+    m = load(model)
+    assert md.guid == m.guid  # instantiationToken: one per model, the FMI 2 GUID
+    by_name = {v.name: v for v in md.modelVariables}
+    assert by_name["time"].causality == "independent"
+    assert set(by_name) - {"time"} == {entry["name"] for entry in m.arrays}
+    for entry in m.arrays:
+        v = by_name[entry["name"]]
+        first = [s for s in m.scalars if s.base == entry["name"]][0]
+        assert v.valueReference == entry["vr"] == first.vr
+        assert [int(d.start) for d in v.dimensions] == list(entry.get("shape", ()))
+        assert v.causality == entry["causality"]
+        if entry["type"] in FMI2_TYPES:
+            unit, display = FMI2_TYPES[entry["type"]]
+            assert v.declaredType.unit == unit and v.declaredType.displayUnit == display
+            assert md.unitDefinitions
+            found = {u.name: u for u in md.unitDefinitions}[unit]
+            assert found.displayUnits[0].name == display
+            assert found.displayUnits[0].factor == pytest.approx(180 / math.pi, rel=1e-15)
+    sequence = by_name["sequence"]
+    assert (sequence.type, sequence.variability, sequence.start) == ("Enumeration", "fixed", "1")
+    items = [item.name for item in sequence.declaredType.items]
+    assert len(items) == 24 and items[0] == "body123" and items[-1] == "space323"
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_every_output_in_model_structure_with_exact_dependencies(model):
+    md = read_model_description(str(fmu3_path(model)))
+    m = load(model)
+    owner = {s.vr: s.base for s in m.scalars}
+    first_vr = {entry["name"]: entry["vr"] for entry in m.arrays}
+    listed = {u.variable.name: u for u in md.outputs}
+    outputs = [e["name"] for e in m.arrays if e["causality"] == "output"]
+    assert sorted(listed) == sorted(outputs)
+    for name in outputs:
+        expected = sorted({first_vr[owner[d]] for s in m.scalars if s.base == name for d in s.depends})
+        assert sorted(v.valueReference for v in listed[name].dependencies) == expected, name
+        assert set(listed[name].dependenciesKind) == {"dependent"}
+    assert sorted(u.variable.name for u in md.initialUnknowns) == sorted(outputs)
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_capability_flags(model):
+    with zipfile.ZipFile(fmu3_path(model)) as z:
+        root = ET.fromstring(z.read("modelDescription.xml"))
+    jacobian = str(load(model).capabilities["provides_directional_derivative"]).lower()
+    for interface in (root.find("CoSimulation"), root.find("ModelExchange")):
+        assert interface.get("canGetAndSetFMUState") == "true"
+        assert interface.get("canSerializeFMUState") == "true"
+        assert interface.get("providesDirectionalDerivatives") == jacobian
+        assert interface.get("providesAdjointDerivatives") == jacobian
+        assert interface.get("providesPerElementDependencies") == "true"
+    cs = root.find("CoSimulation")
+    assert cs.get("canHandleVariableCommunicationStepSize") == "true"
+    assert cs.get("maxOutputDerivativeOrder") == ("1" if model == "AngularKinematics" else "0")
+    assert cs.get("hasEventMode") is None
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_fmu_contents(model):
+    with zipfile.ZipFile(fmu3_path(model)) as z:
+        names = set(z.namelist())
+        html = z.read("documentation/index.html").decode()
+        icon = z.read("terminalsAndIcons/icon.png")
+    for binary in ("x86_64-linux/%s.so", "x86_64-windows/%s.dll", "aarch64-linux/%s.so"):
+        assert "binaries/" + binary % model in names
+    assert "sources/buildDescription.xml" in names
+    assert icon[:8] == b"\x89PNG\r\n\x1a\n"
+    links = re.findall(r'(?:href|src)="([^"]*)"', html)
+    assert all(not re.match(r"[a-z]+:", link) for link in links), links
+    assert model in html
+    assert not any(n.startswith("sources/fmi2") or n.startswith("sources/fmi3Function") for n in names)
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_sources_compile_with_fmpy_and_compute_the_same_bits(model, tmp_path, report):
+    unzipdir, _ = unzipped(model)
+    copy = tmp_path / "fmu"
+    shutil.copytree(unzipdir, copy)
+    shutil.rmtree(copy / "binaries")
+    build_platform_binary(copy, build_dir=tmp_path, all_warnings=True,
+                          cmake_options={"CMAKE_COMPILE_WARNING_AS_ERROR:BOOL": "ON"})
+    assert (copy / "binaries" / "x86_64-linux" / f"{model}.so").is_file()
+    start = {"sequence": 7, "theta": [0.3, -0.4, 1.1]}
+    start.update({"theta_dot": [0.5, 0.25, -1.0]} if model == "AngularKinematics" else
+                 {"omega": [0.5, 0.25, -1.0]})
+
+    def simulate(fmu):
+        return simulate_fmu(str(fmu), stop_time=0.1, output_interval=0.01, start_values=start)
+
+    ours, rebuilt = simulate(fmu3_path(model)), simulate(copy)
+    for name in ours.dtype.names:
+        assert np.array_equal(ours[name], rebuilt[name]), name
+    report(f"{model}: fmpy rebuilt the FMI 3 binary from sources/; {len(ours)} rows bit-identical")

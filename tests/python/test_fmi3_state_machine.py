@@ -1,0 +1,170 @@
+"""The FMI 3.0 state machines: every function of the table below, called with valid arguments in
+every state an instance of either interface can reach, returns fmi3OK exactly where the standard
+allows it (written here from FMI 3.0 sections 3.2 and 4.2, independently of the C table) and
+otherwise fmi3Error with a message naming the function and the state; an instance stays usable
+after a refused call. And fmpy simulates both interfaces start to end."""
+import ctypes
+
+import numpy as np
+import pytest
+from fmpy import simulate_fmu
+
+from fmi3_support import ERROR, OK, Instance3, doubles, fmu3_path, vrs
+
+CS_STATES = ["Instantiated", "Initialization Mode", "Step Mode", "Terminated"]
+ME_STATES = ["Instantiated", "Initialization Mode", "Event Mode", "Continuous-Time Mode",
+             "Terminated"]
+ALL = set(CS_STATES + ME_STATES)
+READ_CS = {"Initialization Mode", "Step Mode", "Terminated"}
+READ_ME = {"Initialization Mode", "Event Mode", "Continuous-Time Mode", "Terminated"}
+
+# function: (states allowed for co-simulation, states allowed for model exchange)
+ALLOWED = {
+    "fmi3EnterInitializationMode": ({"Instantiated"}, {"Instantiated"}),
+    "fmi3ExitInitializationMode": ({"Initialization Mode"}, {"Initialization Mode"}),
+    "fmi3EnterEventMode": (set(), {"Continuous-Time Mode"}),
+    "fmi3Terminate": ({"Step Mode"}, {"Event Mode", "Continuous-Time Mode"}),
+    "fmi3GetFloat64": (READ_CS, READ_ME),
+    "fmi3SetFloat64": ({"Instantiated", "Initialization Mode", "Step Mode"},
+                       {"Instantiated", "Initialization Mode", "Event Mode",
+                        "Continuous-Time Mode"}),
+    "fmi3SetInt64": ({"Instantiated", "Initialization Mode"},
+                     {"Instantiated", "Initialization Mode"}),
+    "fmi3DoStep": ({"Step Mode"}, set()),
+    "fmi3EnterStepMode": (set(), set()),  # from Event Mode, which co-simulation never uses here
+    "fmi3GetOutputDerivatives": ({"Step Mode", "Terminated"}, set()),
+    "fmi3GetDirectionalDerivative": (READ_CS, READ_ME),
+    "fmi3GetAdjointDerivative": (READ_CS, READ_ME),
+    "fmi3EnterContinuousTimeMode": (set(), {"Event Mode"}),
+    "fmi3UpdateDiscreteStates": (set(), {"Event Mode"}),
+    "fmi3CompletedIntegratorStep": (set(), {"Continuous-Time Mode"}),
+    "fmi3SetTime": (set(), {"Event Mode", "Continuous-Time Mode"}),
+    "fmi3GetNumberOfContinuousStates": (set(), set(ME_STATES)),
+    "fmi3GetContinuousStates": (set(), READ_ME),
+    "fmi3GetContinuousStateDerivatives": (set(), {"Event Mode", "Continuous-Time Mode",
+                                                  "Terminated"}),
+    "fmi3GetEventIndicators": (set(), READ_ME),
+    "fmi3GetFMUState": (set(CS_STATES), set(ME_STATES)),
+    "fmi3SetDebugLogging": (set(CS_STATES), set(ME_STATES)),
+    "fmi3Reset": (set(CS_STATES), set(ME_STATES)),
+}
+
+
+# Functions of one interface only (co-simulation without Event Mode here).
+CS_ONLY = {"fmi3DoStep", "fmi3EnterStepMode", "fmi3GetOutputDerivatives"}
+ME_ONLY = {"fmi3EnterEventMode", "fmi3EnterContinuousTimeMode", "fmi3UpdateDiscreteStates",
+           "fmi3CompletedIntegratorStep", "fmi3SetTime", "fmi3GetNumberOfContinuousStates",
+           "fmi3GetContinuousStates", "fmi3GetContinuousStateDerivatives",
+           "fmi3GetEventIndicators"}
+
+
+def enter(instance, state, me):
+    if state == "Instantiated":
+        return
+    assert instance.call("fmi3EnterInitializationMode", False, 0.0, 0.0, False, 0.0) == OK
+    if state == "Initialization Mode":
+        return
+    assert instance.call("fmi3ExitInitializationMode") == OK
+    if state == "Continuous-Time Mode":
+        assert instance.call("fmi3EnterContinuousTimeMode") == OK
+    if state == "Terminated":
+        assert instance.call("fmi3Terminate") == OK
+
+
+def call(instance, function):
+    """The function with valid arguments; the status."""
+    b = [ctypes.c_bool() for _ in range(6)]
+    refs = [ctypes.byref(x) for x in b]
+    d = ctypes.c_double()
+    n = ctypes.c_size_t()
+    out = (ctypes.c_double * 9)()
+    if function in ("fmi3ExitInitializationMode", "fmi3EnterEventMode", "fmi3Terminate",
+                    "fmi3EnterStepMode", "fmi3EnterContinuousTimeMode", "fmi3Reset"):
+        return instance.call(function)
+    args = {
+        "fmi3EnterInitializationMode": (False, 0.0, 0.0, False, 0.0),
+        "fmi3GetFloat64": (vrs([0]), 1, out, 3),
+        "fmi3SetFloat64": (vrs([0]), 1, doubles([0.1, 0.2, 0.3]), 3),
+        "fmi3SetInt64": (vrs([70]), 1, (ctypes.c_int64 * 1)(3), 1),
+        "fmi3DoStep": (ctypes.c_double(0.0), ctypes.c_double(0.01), True, refs[0], refs[1],
+                       refs[2], ctypes.byref(d)),
+        "fmi3GetOutputDerivatives": (vrs([9]), 1, (ctypes.c_int32 * 1)(1), out, 3),
+        "fmi3GetDirectionalDerivative": (vrs([9]), 1, vrs([0]), 1, doubles([1, 0, 0]), 3, out, 3),
+        "fmi3GetAdjointDerivative": (vrs([9]), 1, vrs([0]), 1, doubles([1, 0, 0]), 3, out, 3),
+        "fmi3UpdateDiscreteStates": (*refs[:5], ctypes.byref(d)),
+        "fmi3CompletedIntegratorStep": (True, refs[0], refs[1]),
+        "fmi3SetTime": (ctypes.c_double(0.5),),
+        "fmi3GetNumberOfContinuousStates": (ctypes.byref(n),),
+        "fmi3GetContinuousStates": (out, 0),
+        "fmi3GetContinuousStateDerivatives": (out, 0),
+        "fmi3GetEventIndicators": (out, 0),
+        "fmi3SetDebugLogging": (True, 0, None),
+    }
+    if function == "fmi3GetFMUState":
+        state = ctypes.c_void_p()
+        status = instance.call(function, ctypes.byref(state))
+        if status == OK:
+            assert instance.call("fmi3FreeFMUState", ctypes.byref(state)) == OK
+        return status
+    return instance.call(function, *args[function])
+
+
+@pytest.mark.parametrize("fmi_type", ["CoSimulation", "ModelExchange"])
+@pytest.mark.parametrize("function", sorted(ALLOWED))
+def test_function_allowed_exactly_in_the_standard_states(function, fmi_type):
+    me = fmi_type == "ModelExchange"
+    allowed = ALLOWED[function][1 if me else 0]
+    for state in ME_STATES if me else CS_STATES:
+        instance = Instance3("AngularKinematics", fmi_type=fmi_type)
+        try:
+            enter(instance, state, me)
+            status = call(instance, function)
+            if state in allowed:
+                assert status == OK, (function, state, instance.messages)
+                continue
+            assert status == ERROR, (function, state)
+            message = instance.errors()[-1]
+            assert message.startswith(function), message
+            if function == "fmi3SetInt64" and state != "Terminated":
+                assert "sequence" in message and "variability fixed" in message, message
+            elif function in (CS_ONLY if me else ME_ONLY):
+                assert "not available to this instance" in message, message
+            else:
+                assert f"illegal call in state {state}" in message, message
+            # Still usable: a reset works and the instance can be initialized again.
+            assert instance.call("fmi3Reset") == OK
+            enter(instance, "Initialization Mode", me)
+        finally:
+            instance.free()
+
+
+@pytest.mark.parametrize("model", ["AngularKinematics", "EulerRates"])
+@pytest.mark.parametrize("fmi_type", ["CoSimulation", "ModelExchange"])
+def test_fmpy_simulates_both_interfaces(model, fmi_type):
+    theta = [0.3, -0.2, 0.9]
+    start = {"sequence": 13, "theta": theta}
+    result = simulate_fmu(str(fmu3_path(model)), fmi_type=fmi_type, stop_time=0.5,
+                          output_interval=0.1, start_values=start)
+    assert len(result) == 6 and result["time"][-1] == pytest.approx(0.5)
+    first_output = "omega_fixed" if model == "AngularKinematics" else "theta_dot"
+    assert result[first_output].shape == (6, 3)
+    if model == "AngularKinematics":
+        assert np.allclose(result["q"][:, 0] ** 2 + (result["q"][:, 1:] ** 2).sum(axis=1), 1.0)
+
+
+def test_reset_returns_to_instantiated_with_start_values():
+    instance = Instance3("AngularKinematics")
+    try:
+        instance.initialize(parameters={"sequence": 5}, inputs={"theta": [1.0, 2.0, 0.5]})
+        assert instance.do_step(0.0, 0.1) == (OK, 0.1)
+        assert instance.call("fmi3Reset") == OK
+        # Instantiated again: a parameter can be set, outputs cannot be read.
+        assert instance.get_raw(["omega_fixed"])[0] == ERROR
+        instance.initialize()
+        assert instance.get(["theta"])["theta"].tolist() == [0.0, 0.0, 0.0]
+        sequence = (ctypes.c_int64 * 1)()
+        assert instance.call("fmi3GetInt64", vrs([70]), 1, sequence, 1) == OK
+        assert sequence[0] == 1
+        assert instance.do_step(0.0, 0.25) == (OK, 0.25)  # the time started again from 0
+    finally:
+        instance.free()

@@ -1,0 +1,207 @@
+/* A minimal FMI 3.0 co-simulation importer of our own, to prove the binaries of other platforms:
+ * built natively, for aarch64 (run under qemu-aarch64) and with mingw-w64 (run under wine), it
+ * loads one FMI 3 binary of AngularKinematics or EulerRates, drives it through every rotation
+ * sequence (and both frames of EulerRates) with fixed inputs, and prints every output, and for
+ * AngularKinematics the directional, adjoint and output derivatives, as the hex of their IEEE 754
+ * bits, with the status of each call. Two platforms agree when their printouts are identical.
+ *
+ * The inputs are exact binary fractions from an integer generator, so every platform feeds the
+ * FMU the same bits and any difference comes from the binaries alone.
+ *
+ * Usage: fmi3_driver LIBRARY MODEL [STEPS]    exit status 0 when no call returned fmi3Error. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi3FunctionTypes.h"
+
+#ifdef _WIN32
+#include <windows.h>
+#else
+#include <dlfcn.h>
+#endif
+
+typedef void (*generic_function)(void);
+
+typedef struct {
+    fmi3InstantiateCoSimulationTYPE *instantiate;
+    fmi3EnterInitializationModeTYPE *enter_initialization_mode;
+    fmi3ExitInitializationModeTYPE *exit_initialization_mode;
+    fmi3SetInt64TYPE *set_int64;
+    fmi3SetFloat64TYPE *set_float64;
+    fmi3GetFloat64TYPE *get_float64;
+    fmi3DoStepTYPE *do_step;
+    fmi3GetDirectionalDerivativeTYPE *directional;
+    fmi3GetAdjointDerivativeTYPE *adjoint;
+    fmi3GetOutputDerivativesTYPE *output_derivatives;
+    fmi3TerminateTYPE *terminate;
+    fmi3FreeInstanceTYPE *free_instance;
+} fmi3_api;
+
+static generic_function load_symbol(void *library, const char *name) {
+    generic_function function = NULL;
+#ifdef _WIN32
+    function = (generic_function)GetProcAddress((HMODULE)library, name);
+#else
+    void *symbol = dlsym(library, name);
+    memcpy(&function, &symbol, sizeof function); /* POSIX: object to function pointer */
+#endif
+    if (function == NULL) {
+        fprintf(stderr, "fmi3_driver: the library exports no %s\n", name);
+    }
+    return function;
+}
+
+static int load_api(void *library, fmi3_api *api) {
+    enum { N = 12 };
+    const char *names[N] = {"fmi3InstantiateCoSimulation", "fmi3EnterInitializationMode",
+                            "fmi3ExitInitializationMode", "fmi3SetInt64", "fmi3SetFloat64",
+                            "fmi3GetFloat64", "fmi3DoStep", "fmi3GetDirectionalDerivative",
+                            "fmi3GetAdjointDerivative", "fmi3GetOutputDerivatives",
+                            "fmi3Terminate", "fmi3FreeInstance"};
+    generic_function f[N];
+    for (int i = 0; i < N; i++) {
+        if ((f[i] = load_symbol(library, names[i])) == NULL) {
+            return 0;
+        }
+    }
+    api->instantiate = (fmi3InstantiateCoSimulationTYPE *)f[0];
+    api->enter_initialization_mode = (fmi3EnterInitializationModeTYPE *)f[1];
+    api->exit_initialization_mode = (fmi3ExitInitializationModeTYPE *)f[2];
+    api->set_int64 = (fmi3SetInt64TYPE *)f[3];
+    api->set_float64 = (fmi3SetFloat64TYPE *)f[4];
+    api->get_float64 = (fmi3GetFloat64TYPE *)f[5];
+    api->do_step = (fmi3DoStepTYPE *)f[6];
+    api->directional = (fmi3GetDirectionalDerivativeTYPE *)f[7];
+    api->adjoint = (fmi3GetAdjointDerivativeTYPE *)f[8];
+    api->output_derivatives = (fmi3GetOutputDerivativesTYPE *)f[9];
+    api->terminate = (fmi3TerminateTYPE *)f[10];
+    api->free_instance = (fmi3FreeInstanceTYPE *)f[11];
+    return 1;
+}
+
+/* What the driver knows of each model (docs/fmi3_variables.md). */
+typedef struct {
+    const char *name;
+    const char *token;
+    fmi3ValueReference outputs[10];
+    size_t n_outputs, n_output_values;
+    fmi3ValueReference sequence, frame; /* frame 0: none */
+    int derivatives;
+} model_facts;
+
+static const model_facts MODELS[] = {
+    {"AngularKinematics", "{c3391885-ba93-4824-bb36-df39703b63ee}",
+     {9, 12, 15, 18, 21, 30, 34, 43, 52, 61}, 10, 61, 70, 0, 1},
+    {"EulerRates", "{6f0d3c8e-2b1a-4e55-9a53-2f4c1d7e8b90}", {9, 12, 15, 18, 21}, 5, 13, 22, 23, 0},
+};
+
+static uint64_t generator = 0x853c49e6748fea9bULL;
+
+/* An exact binary fraction in [-3, 3): 53 random bits scaled by powers of two and shifted. */
+static double next_input(void) {
+    generator = generator * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(generator >> 11) * (6.0 / 9007199254740992.0) - 3.0;
+}
+
+static void print_values(const char *what, const double *v, size_t n) {
+    printf("%s", what);
+    for (size_t i = 0; i < n; i++) {
+        uint64_t bits;
+        memcpy(&bits, &v[i], sizeof bits);
+        printf(" %016llx", (unsigned long long)bits);
+    }
+    printf("\n");
+}
+
+static int errors = 0;
+
+static void status(const char *call, fmi3Status s) {
+    printf("%s %d\n", call, (int)s);
+    if (s == fmi3Error || s == fmi3Fatal) {
+        errors++;
+    }
+}
+
+static void run_case(const fmi3_api *api, const model_facts *m, int64_t sequence, int64_t frame,
+                     int steps) {
+    fmi3Instance instance = api->instantiate("driver", m->token, NULL, fmi3False, fmi3False,
+                                             fmi3False, fmi3False, NULL, 0, NULL, NULL, NULL);
+    if (instance == NULL) {
+        printf("instantiate failed\n");
+        errors++;
+        return;
+    }
+    printf("case sequence %lld frame %lld\n", (long long)sequence, (long long)frame);
+    status("set sequence", api->set_int64(instance, &m->sequence, 1, &sequence, 1));
+    if (m->frame != 0) {
+        status("set frame", api->set_int64(instance, &m->frame, 1, &frame, 1));
+    }
+    status("enter", api->enter_initialization_mode(instance, fmi3False, 0.0, 0.0, fmi3False, 0.0));
+    status("exit", api->exit_initialization_mode(instance));
+    const fmi3ValueReference inputs[3] = {0, 3, 6};
+    double t = 0.0;
+    for (int step = 0; step < steps; step++) {
+        double u[9], y[61];
+        for (int k = 0; k < 9; k++) {
+            u[k] = next_input();
+        }
+        status("set", api->set_float64(instance, inputs, 3, u, 9));
+        fmi3Boolean event, terminate, early;
+        double last;
+        status("step", api->do_step(instance, t, 0.125, fmi3True, &event, &terminate, &early, &last));
+        t = last;
+        status("get", api->get_float64(instance, m->outputs, m->n_outputs, y, m->n_output_values));
+        print_values("outputs", y, m->n_output_values);
+        if (m->derivatives) {
+            double seed[61], sensitivity[61];
+            for (int k = 0; k < 61; k++) {
+                seed[k] = (double)(k + 1) * 0.25;
+            }
+            status("directional", api->directional(instance, m->outputs, 5, inputs, 3, seed, 9,
+                                                   sensitivity, 21));
+            print_values("directional", sensitivity, 21);
+            status("adjoint",
+                   api->adjoint(instance, m->outputs, 5, inputs, 3, seed, 21, sensitivity, 9));
+            print_values("adjoint", sensitivity, 9);
+            const fmi3Int32 orders[4] = {1, 1, 1, 1};
+            status("output derivatives",
+                   api->output_derivatives(instance, m->outputs, 4, orders, sensitivity, 12));
+            print_values("output derivatives", sensitivity, 12);
+        }
+    }
+    status("terminate", api->terminate(instance));
+    api->free_instance(instance);
+}
+
+int main(int argc, char **argv) {
+    if (argc < 3) {
+        fprintf(stderr, "usage: fmi3_driver LIBRARY MODEL [STEPS]\n");
+        return 2;
+    }
+    const model_facts *m = NULL;
+    for (size_t i = 0; i < sizeof MODELS / sizeof MODELS[0]; i++) {
+        if (strcmp(argv[2], MODELS[i].name) == 0) {
+            m = &MODELS[i];
+        }
+    }
+    const int steps = argc > 3 ? atoi(argv[3]) : 3;
+#ifdef _WIN32
+    void *library = (void *)LoadLibraryA(argv[1]);
+#else
+    void *library = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
+#endif
+    fmi3_api api;
+    if (m == NULL || library == NULL || !load_api(library, &api)) {
+        fprintf(stderr, "fmi3_driver: cannot load %s as model %s\n", argv[1], argv[2]);
+        return 2;
+    }
+    for (int64_t sequence = 1; sequence <= 24; sequence++) {
+        for (int64_t frame = 1; frame <= (m->frame != 0 ? 2 : 1); frame++) {
+            run_case(&api, m, sequence, frame, steps);
+        }
+    }
+    printf("errors %d\n", errors);
+    return errors == 0 ? 0 : 1;
+}
