@@ -14,6 +14,7 @@
 The generated files are committed (docs/architecture.md says why); nothing here needs more than
 the Python standard library."""
 import argparse
+import re
 import sys
 
 from codegen import project
@@ -32,7 +33,13 @@ def xml_escape(text):
 
 
 def constant_prefix(model):
-    return {"AngularKinematics": "AK", "EulerRates": "ER"}.get(model.name, model.name.upper())
+    return {"AngularKinematics": "AK", "EulerRates": "ER",
+            "AttitudePropagator": "AP"}.get(model.name, model.name.upper())
+
+
+def c_identifier(name):
+    """The C constant of a description name: "theta_dot" -> THETA_DOT, "der(q)" -> DER_Q."""
+    return re.sub(r"[^A-Za-z0-9]+", "_", name).strip("_").upper()
 
 
 # --- C ------------------------------------------------------------------------------------------
@@ -79,10 +86,13 @@ def variables_h(model):
              f"#ifndef {guard}", f"#define {guard}", "", '#include "model.h"', "",
              f'#define {p}_GUID "{model.guid}"', "", "enum {"]
     for entry in model.arrays:
-        lines.append(f"    {p}_VR_{entry['name'].upper()} = {entry['vr']},")
+        lines.append(f"    {p}_VR_{c_identifier(entry['name'])} = {entry['vr']},")
     n_slots = max(s.vr for s in model.scalars) + 1
     lines += [f"    {p}_N_INPUTS = {len(model.by_causality('input'))},",
-              f"    {p}_N_OUTPUTS = {len(model.by_causality('output'))},",
+              f"    {p}_N_OUTPUTS = {len(model.by_causality('output'))},"]
+    if model.states:
+        lines.append(f"    {p}_N_STATES = {len(model.states)},")
+    lines += [
               f"    {p}_N_VALUE_REFERENCES = {n_slots} /* highest value reference + 1 */",
               "};", "",
               f"extern const ak_variable {p}_VARIABLES[{p}_N_VALUE_REFERENCES];", "", "#endif", ""]
@@ -96,13 +106,14 @@ def variables_c(model):
              f'#include "{model.name}_variables.h"', "",
              f"const ak_variable {p}_VARIABLES[{p}_N_VALUE_REFERENCES] = {{"]
     for s in model.scalars:
-        deps = "{" + ", ".join(str(d) for d in s.depends) + "}" if s.depends else "{0}"
+        inputs = model.input_dependencies(s)
+        deps = "{" + ", ".join(str(d) for d in inputs) + "}" if inputs else "{0}"
         unit = project.TYPES.get(s.type, (None, "", None))[1]
         group = "AK_GROUP_LAZY" if s.group == "lazy" else "AK_GROUP_MAIN"
         lines.append(
             f"    [{s.vr}] = {{{s.vr}, {c_string(s.name)}, AK_CAUSALITY_{s.causality.upper()}, "
             f"AK_TYPE_{s.fmi_type.upper()}, {group}, {c_string(s.type)}, {c_string(unit)}, "
-            f"{s.start!r}, {s.min!r}, {s.max!r}, {c_string(s.description)}, {len(s.depends)}, "
+            f"{s.start!r}, {s.min!r}, {s.max!r}, {c_string(s.description)}, {len(inputs)}, "
             f"{deps}}},")
     lines += ["};", ""]
     return "\n".join(lines)
@@ -229,18 +240,35 @@ def model_description(model):
         if s.fmi_type == "Integer":
             element = f'<Enumeration declaredType="{s.type}" start="{int(s.start)}"/>'
         else:
-            start = f' start="{s.start!r}"' if s.causality != "output" else ""
+            start = f' start="{s.start!r}"' if s.causality in ("input", "parameter") else ""
             bounds = f' min="{s.min!r}" max="{s.max!r}"' if s.causality == "parameter" else ""
-            element = f'<Real declaredType="{s.type}"{start}{bounds}/>'
+            derivative = (f' derivative="{index[s.derivative_of]}"'
+                          if s.derivative_of is not None else "")
+            element = f'<Real declaredType="{s.type}"{derivative}{start}{bounds}/>'
         out += [f"    <!-- index {position} -->",
                 f'    <ScalarVariable name="{s.name}" valueReference="{s.vr}" '
                 f'description="{xml_escape(s.description)}" {attributes}>',
                 f"      {element}", "    </ScalarVariable>"]
     out += ["  </ModelVariables>", "", "  <ModelStructure>"]
-    for section in ("Outputs", "InitialUnknowns"):
+    by_vr = model.scalars_by_vr
+
+    def initial(vrs):
+        """In Initialization Mode a state is known through the parameters of its start."""
+        return sorted({k for d in vrs for k in (by_vr[d].initial_depends if by_vr[d].state
+                                                 else [d])})
+
+    initial_unknowns = sorted({s.vr for s in model.by_causality("output") + model.states
+                               + model.derivatives}, key=lambda vr: index[vr])
+    sections = [("Outputs", [(s, s.depends) for s in model.by_causality("output")]),
+                ("Derivatives", [(s, s.depends) for s in model.derivatives]),
+                ("InitialUnknowns", [(by_vr[vr], initial(by_vr[vr].depends))
+                                     for vr in initial_unknowns])]
+    for section, unknowns in sections:
+        if not unknowns:
+            continue
         out.append(f"    <{section}>")
-        for s in model.by_causality("output"):
-            deps = " ".join(str(index[d]) for d in s.depends)
+        for s, depends in unknowns:
+            deps = " ".join(str(index[d]) for d in depends)
             out.append(f'      <Unknown index="{index[s.vr]}" dependencies="{deps}"/>  '
                        f"<!-- {s.name} -->")
         out.append(f"    </{section}>")
