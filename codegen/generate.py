@@ -108,7 +108,7 @@ def variables_c(model):
     for s in model.scalars:
         inputs = model.input_dependencies(s)
         deps = "{" + ", ".join(str(d) for d in inputs) + "}" if inputs else "{0}"
-        unit = project.TYPES.get(s.type, (None, "", None))[1]
+        unit = {**project.TYPES, **project.OPTIONAL_TYPES}.get(s.type, (None, "", None))[1]
         group = "AK_GROUP_LAZY" if s.group == "lazy" else "AK_GROUP_MAIN"
         lines.append(
             f"    [{s.vr}] = {{{s.vr}, {c_string(s.name)}, AK_CAUSALITY_{s.causality.upper()}, "
@@ -205,11 +205,14 @@ def model_description(model):
     </Unit>
     <Unit name="1/s">
       <BaseUnit s="-1"/>
-    </Unit>
-  </UnitDefinitions>
-
-  <TypeDefinitions>''']
-    for name, (quantity, unit, display) in project.TYPES.items():
+    </Unit>''']
+    used = {s.type for s in model.scalars}
+    types = dict(project.TYPES)
+    types.update({name: t for name, t in project.OPTIONAL_TYPES.items() if name in used})
+    if "Time" in used:
+        out += ['    <Unit name="s">', '      <BaseUnit s="1"/>', "    </Unit>"]
+    out += ["  </UnitDefinitions>", "", "  <TypeDefinitions>"]
+    for name, (quantity, unit, display) in types.items():
         attributes = "".join(f' {key}="{value}"' for key, value in
                              (("quantity", quantity), ("unit", unit or None),
                               ("displayUnit", display)) if value)

@@ -52,6 +52,10 @@ TYPES = {
     "Dimensionless": (None, "", None),
     "Frequency": ("Frequency", "1/s", None),
 }
+# Declared types written only into the modelDescription.xml of a model that uses them.
+OPTIONAL_TYPES = {
+    "Time": ("Time", "s", None),
+}
 # Enumerations every model may use; a model's description can add its own.
 ENUMERATIONS = {
     "Sequence": dict(

@@ -42,31 +42,51 @@ void ak_quat_to_matrix(const double q[4], double R[3][3]) {
     R[2][2] = 1.0 - 2.0 * (x * x + y * y);
 }
 
-void ak_attitude_step_vector(ak_frame frame, const double w0[3], const double w1[3],
-                             const double w2[3], double h, double omega_vector[3]) {
+void ak_attitude_input_polynomial(const double w0[3], const double w1[3], const double w2[3],
+                                  const double *wp, const double *wdp, double hp,
+                                  double c[4][3]) {
+    for (int k = 0; k < 3; k++) {
+        c[0][k] = w0[k];
+        c[1][k] = w1[k];
+        c[2][k] = 0.5 * w2[k];
+        c[3][k] = 0.0;
+        if (wp == NULL) {
+            continue;
+        }
+        const double slope_gap = wdp[k] - w1[k];
+        if (w2[k] != 0.0) { /* c2 given: the cubic term matches the slope at -hp */
+            c[3][k] = (slope_gap + 2.0 * c[2][k] * hp) / (3.0 * hp * hp);
+        } else {
+            const double value_gap = wp[k] - w0[k] + w1[k] * hp;
+            c[3][k] = (slope_gap + 2.0 * value_gap / hp) / (hp * hp);
+            c[2][k] = value_gap / (hp * hp) + c[3][k] * hp;
+        }
+    }
+}
+
+void ak_attitude_step_vector(ak_frame frame, double c[4][3], double h, double omega_vector[3]) {
     /* Gauss points s = h (1/2 -+ sqrt(3)/6) of the polynomial omega(s) (attitude.h, section 4). */
     const double r = 0.28867513459481288225; /* sqrt(3) / 6 */
     const double s[2] = {h * (0.5 - r), h * (0.5 + r)};
     double a[2][3];
     for (int g = 0; g < 2; g++) {
         for (int k = 0; k < 3; k++) {
-            a[g][k] = w0[k] + s[g] * (w1[k] + 0.5 * s[g] * w2[k]);
+            a[g][k] = c[0][k] + s[g] * (c[1][k] + s[g] * (c[2][k] + s[g] * c[3][k]));
         }
     }
     const double cross[3] = {a[0][1] * a[1][2] - a[0][2] * a[1][1],
                              a[0][2] * a[1][0] - a[0][0] * a[1][2],
                              a[0][0] * a[1][1] - a[0][1] * a[1][0]};
     /* +sqrt(3)/24 for q (x) A (body), - for A (x) q (fixed). */
-    const double c = (frame == AK_FRAME_BODY ? 1.0 : -1.0) * 0.07216878364870322056 * h * h;
+    const double commutator = (frame == AK_FRAME_BODY ? 1.0 : -1.0) * 0.07216878364870322056 * h * h;
     for (int k = 0; k < 3; k++) {
-        omega_vector[k] = 0.25 * h * (a[0][k] + a[1][k]) + c * cross[k];
+        omega_vector[k] = 0.25 * h * (a[0][k] + a[1][k]) + commutator * cross[k];
     }
 }
 
-bool ak_attitude_step(ak_frame frame, const double w0[3], const double w1[3], const double w2[3],
-                      double h, double q[4], double *correction) {
+bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction) {
     double v[3], e[4], next[4];
-    ak_attitude_step_vector(frame, w0, w1, w2, h, v);
+    ak_attitude_step_vector(frame, c, h, v);
     ak_quat_exp(v, e);
     if (frame == AK_FRAME_BODY) {
         ak_quat_multiply(q, e, next);

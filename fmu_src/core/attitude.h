@@ -21,9 +21,21 @@
  * 3. Exponential map: exp((0, v)) = (cos|v|, sin|v| v/|v|), with the Taylor series of sin|v|/|v|
  *   below |v| = 1e-4 (error < 1e-20 there), unit to rounding.
  *
- * 4. The step (co-simulation): over [t, t + h] omega is the polynomial the master gives,
- *       omega(t + s) = w0 + w1 s + w2 s^2 / 2      (w1 = omega_dot, w2 = its derivative),
- *   and the 4th-order Magnus method with the two Gauss points s_1,2 = h (1/2 -+ sqrt(3)/6),
+ * 4. The step (co-simulation): over [t, t + h] omega is a cubic polynomial
+ *       omega(t + s) = c0 + c1 s + c2 s^2 + c3 s^3,
+ *   built by ak_attitude_input_polynomial from what the master gives at t: omega (w0), its first
+ *   derivative (w1, omega_dot) and, if given, its second (w2); and, when the previous step also
+ *   had derivatives, from omega and omega_dot at the previous communication point t - hp:
+ *     with history:  c0 = w0, c1 = w1, and c2, c3 such that the cubic also takes the value wp and
+ *                    the slope wdp at s = -hp (Hermite; with w2 given, c2 = w2 / 2 and only the
+ *                    slope is matched): D = wp - w0 + w1 hp, E = wdp - w1,
+ *                    c3 = (E + 2 D / hp) / hp^2,  c2 = D / hp^2 + c3 hp;
+ *     without:       c0 = w0, c1 = w1, c2 = w2 / 2, c3 = 0 (Taylor).
+ *   Why the history: omega and omega_dot at t alone leave an O(h^3) error in the integral of
+ *   omega over the step, which makes any method second order in h; the cubic errs by O(h^4), so
+ *   the integral by O(h^5) and the method is fourth order. Constant omega gives c1 = c2 = c3 = 0
+ *   exactly. Held inputs (no derivatives given) are held: c0 = w0 and nothing else.
+ *   The 4th-order Magnus method with the two Gauss points s_1,2 = h (1/2 -+ sqrt(3)/6),
  *   A_i = (0, omega(s_i)) / 2, is, for the body form dq/dt = q (x) A(t):
  *       q(t + h) = q(t) (x) exp(Omega),  Omega = h (A1 + A2) / 2 + (sqrt(3)/12) h^2 [A1, A2],
  *   and for the fixed form dq/dt = A(t) (x) q:
@@ -94,16 +106,20 @@ void ak_quat_exp(const double v[3], double out[4]);
 /* R of a unit q (section 1), row-major. */
 void ak_quat_to_matrix(const double q[4], double R[3][3]);
 
-/* The rotation vector Omega of one step (section 4): omega at the step start (w0), its first
- * and second time derivatives (w1, w2), step h, frame of the components. */
-void ak_attitude_step_vector(ak_frame frame, const double w0[3], const double w1[3],
-                             const double w2[3], double h, double omega_vector[3]);
+/* The cubic c[m][k] (coefficient of s^m, component k) of omega over a step (section 4): w0, w1,
+ * w2 at the step start; wp, wdp (omega and omega_dot at the previous communication point, hp
+ * before) or wp == NULL when there is no history. */
+void ak_attitude_input_polynomial(const double w0[3], const double w1[3], const double w2[3],
+                                  const double *wp, const double *wdp, double hp,
+                                  double c[4][3]);
+
+/* The rotation vector Omega of one step (section 4) for omega(s) = sum c[m] s^m, step h. */
+void ak_attitude_step_vector(ak_frame frame, double c[4][3], double h, double omega_vector[3]);
 
 /* q := q advanced over h (section 4). Returns false, q untouched, when the result is not
  * finite (a huge omega h). *correction (may be NULL) receives |q_new - q_uncorrected|, the size
  * of the rounding correction. */
-bool ak_attitude_step(ak_frame frame, const double w0[3], const double w1[3], const double w2[3],
-                      double h, double q[4], double *correction);
+bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction);
 
 /* Angles of `sequence` for the attitude R (sections 5, 6). previous: the last angle set of the
  * same trajectory, or NULL for the principal set. Writes theta and the singularity distance;

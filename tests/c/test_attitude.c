@@ -109,7 +109,8 @@ static void test_exp(void) {
 
 /* Constant omega: q(t) = q0 (x) exp(t omega / 2) (body) and exp(t omega / 2) (x) q0 (fixed). */
 static void test_constant_rotation_is_exact(void) {
-    const double w[3] = {0.3, -1.1, 2.0}, zero[3] = {0.0, 0.0, 0.0};
+    const double w[3] = {0.3, -1.1, 2.0};
+    double c[4][3] = {{w[0], w[1], w[2]}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
     const double q0[4] = {0.5, 0.5, -0.5, 0.5};
     for (int f = 0; f < 2; f++) {
         const ak_frame frame = f ? AK_FRAME_BODY : AK_FRAME_FIXED;
@@ -117,7 +118,7 @@ static void test_constant_rotation_is_exact(void) {
         const double h = 1e-2;
         const int steps = 1000;
         for (int n = 0; n < steps; n++) {
-            ak_attitude_step(frame, w, zero, zero, h, q, NULL);
+            ak_attitude_step(frame, c, h, q, NULL);
         }
         const double t = h * steps, v[3] = {w[0] * t / 2, w[1] * t / 2, w[2] * t / 2};
         double e[4], exact[4];
@@ -136,6 +137,38 @@ static void test_constant_rotation_is_exact(void) {
         check(error < 1e-13, frame == AK_FRAME_BODY ? "constant rotation, body" : "constant rotation, fixed",
               error, 1e-13);
     }
+}
+
+/* The input cubic from the history reproduces a cubic omega exactly (attitude.h, section 4). */
+static void test_input_polynomial(void) {
+    const double C[4][3] = {{0.3, -1.0, 2.0}, {0.7, 0.2, -0.5}, {-0.4, 1.1, 0.25}, {0.9, -0.6, 0.3}};
+    const double hp = 0.37;
+    double w0[3], w1[3], w2[3], wp[3], wdp[3], none[3] = {0.0, 0.0, 0.0};
+    for (int k = 0; k < 3; k++) {
+        const double s = -hp;
+        w0[k] = C[0][k];
+        w1[k] = C[1][k];
+        w2[k] = 2.0 * C[2][k];
+        wp[k] = C[0][k] + s * (C[1][k] + s * (C[2][k] + s * C[3][k]));
+        wdp[k] = C[1][k] + s * (2.0 * C[2][k] + s * 3.0 * C[3][k]);
+    }
+    double c[4][3], worst = 0.0, worst_given = 0.0;
+    ak_attitude_input_polynomial(w0, w1, none, wp, wdp, hp, c);
+    for (int m = 0; m < 4; m++) {
+        for (int k = 0; k < 3; k++) {
+            worst = fmax(worst, fabs(c[m][k] - C[m][k]));
+        }
+    }
+    ak_attitude_input_polynomial(w0, w1, w2, wp, wdp, hp, c);
+    for (int m = 0; m < 4; m++) {
+        for (int k = 0; k < 3; k++) {
+            worst_given = fmax(worst_given, fabs(c[m][k] - C[m][k]));
+        }
+    }
+    check(worst < 1e-13, "Hermite cubic from the history", worst, 1e-13);
+    check(worst_given < 1e-13, "cubic from w2 and the history slope", worst_given, 1e-13);
+    ak_attitude_input_polynomial(w0, w1, w2, NULL, NULL, 0.0, c);
+    check(c[2][1] == C[2][1] && c[3][1] == 0.0, "Taylor without history", c[3][1], 0.0);
 }
 
 /* Angles -> R -> angles returns the principal angles for all 24 sequences, and the angles of a
@@ -216,11 +249,13 @@ static void norm_run(long steps, double *drift, double *largest_correction) {
     *largest_correction = 0.0;
     for (long n = 0; n < steps; n++) {
         const double t = h * (double)n;
-        const double w0[3] = {sin(t), 0.5 * cos(2 * t), 0.3 + 0.2 * sin(3 * t)};
-        const double w1[3] = {cos(t), -sin(2 * t), 0.6 * cos(3 * t)};
-        const double w2[3] = {-sin(t), -2.0 * cos(2 * t), -1.8 * sin(3 * t)};
+        /* The Taylor cubic of omega at t. */
+        double c[4][3] = {{sin(t), 0.5 * cos(2 * t), 0.3 + 0.2 * sin(3 * t)},
+                          {cos(t), -sin(2 * t), 0.6 * cos(3 * t)},
+                          {-sin(t) / 2, -cos(2 * t), -0.9 * sin(3 * t)},
+                          {-cos(t) / 6, 4.0 * sin(2 * t) / 6, -5.4 * cos(3 * t) / 6}};
         double correction;
-        ak_attitude_step(AK_FRAME_BODY, w0, w1, w2, h, q, &correction);
+        ak_attitude_step(AK_FRAME_BODY, c, h, q, &correction);
         *largest_correction = fmax(*largest_correction, correction);
     }
     *drift = fabs(sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]) - 1.0);
@@ -239,6 +274,7 @@ int main(int argc, char **argv) {
     test_matrix_matches_kinematics_general();
     test_exp();
     test_constant_rotation_is_exact();
+    test_input_polynomial();
     test_angles_round_trip();
     test_trajectory_through_singularity();
     double drift, correction;

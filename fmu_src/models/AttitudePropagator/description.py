@@ -74,6 +74,18 @@ VARIABLES = [
          description="frame of the components of the inputs omega and omega_dot"),
     dict(name="sequence", vr=43, causality="parameter", type="Sequence", start="body123",
          description="rotation sequence of the angle outputs theta"),
+    # Co-simulation memory of the step (core/attitude.h, section 4): values, so that an FMU state
+    # carries them and a replay is bit-identical.
+    dict(name="omega_previous", vr=48, shape=(3,), causality="local", type="AngularVelocity",
+         description="co-simulation: omega[{i}] at the previous communication point",
+         depends=[]),
+    dict(name="omega_dot_previous", vr=51, shape=(3,), causality="local",
+         type="AngularAcceleration",
+         description="co-simulation: the time derivative of omega[{i}] used at the previous "
+                     "communication point", depends=[]),
+    dict(name="h_previous", vr=54, causality="local", type="Time",
+         description="co-simulation: the previous communication step size when it had input "
+                     "derivatives, else 0 (no history)", depends=[]),
     dict(name="q0", vr=44, shape=(4,), causality="parameter", type="Dimensionless",
          start=lambda i: 1.0 if i == 1 else 0.0, min=-1.7976931348623157e308, max=1.7976931348623157e308,
          description="initial quaternion, component {i} (scalar first); normalized at "

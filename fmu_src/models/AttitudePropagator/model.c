@@ -152,17 +152,38 @@ static ak_eval_status initialize(ak_model_data *data) {
     return AK_EVAL_OK;
 }
 
+/* One co-simulation step (core/attitude.h, section 4): the cubic of omega from the inputs, their
+ * derivatives and the previous communication point, then the Magnus step. */
 static ak_eval_status step(ak_model_data *data, double h) {
-    double w1[3], w2[3];
+    double w1[3], w2[3], c[4][3];
     acceleration(data, w1, w2);
     double *v = data->values;
-    if (!ak_attitude_step(frame_of(data), &v[AP_VR_OMEGA], w1, w2, h, &v[AP_VR_Q], NULL)) {
+    const bool derivatives_given = w1[0] != 0.0 || w1[1] != 0.0 || w1[2] != 0.0 ||
+                                   w2[0] != 0.0 || w2[1] != 0.0 || w2[2] != 0.0;
+    const double hp = v[AP_VR_H_PREVIOUS];
+    if (derivatives_given) {
+        const bool history = hp > 0.0;
+        ak_attitude_input_polynomial(&v[AP_VR_OMEGA], w1, w2,
+                                     history ? &v[AP_VR_OMEGA_PREVIOUS] : NULL,
+                                     history ? &v[AP_VR_OMEGA_DOT_PREVIOUS] : NULL, hp, c);
+    } else { /* held inputs: omega constant over the step */
+        for (int k = 0; k < 3; k++) {
+            c[0][k] = v[AP_VR_OMEGA + k];
+            c[1][k] = c[2][k] = c[3][k] = 0.0;
+        }
+    }
+    if (!ak_attitude_step(frame_of(data), c, h, &v[AP_VR_Q], NULL)) {
         ak_model_log(data, AK_LOG_ERROR, AK_STATUS_ERROR,
                      "fmi2DoStep: omega = (%g, %g, %g) over communicationStepSize = %g gives a "
                      "rotation that is not finite; the state q is left as it was",
                      v[AP_VR_OMEGA], v[AP_VR_OMEGA + 1], v[AP_VR_OMEGA + 2], h);
         return AK_EVAL_FAILED;
     }
+    for (int k = 0; k < 3; k++) {
+        v[AP_VR_OMEGA_PREVIOUS + k] = v[AP_VR_OMEGA + k];
+        v[AP_VR_OMEGA_DOT_PREVIOUS + k] = w1[k];
+    }
+    v[AP_VR_H_PREVIOUS] = derivatives_given ? h : 0.0;
     return AK_EVAL_OK;
 }
 
