@@ -71,8 +71,9 @@ static void rotate_back(double R[3][3], const double in[3], double out[3]) {
     }
 }
 
-/* The outputs from the states (normalized: model exchange integrators let |q| drift), the inputs
- * and the last angles (the reference of the unwrapping). */
+/* The main group, evaluated at every communication point (the angles' unwrapping follows the
+ * path): R, theta and the distance from the states (normalized: model exchange integrators let
+ * |q| drift) and the last angles (the reference of the unwrapping); der(q). */
 static ak_eval_status evaluate(ak_model_data *data) {
     double *v = data->values;
     const double *q = &v[AP_VR_Q];
@@ -87,12 +88,35 @@ static ak_eval_status evaluate(ak_model_data *data) {
     const double unit[4] = {q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm};
     double R[3][3];
     ak_quat_to_matrix(unit, R);
-    const ak_sequence *sequence = sequence_of(data);
-    const ak_frame frame = frame_of(data);
     double theta[3], distance;
-    const bool singular = ak_attitude_angles(sequence, R, &v[AP_VR_THETA], theta, &distance);
-    double theta_dot[3];
-    ak_attitude_angle_rates(sequence, frame, theta, singular, &v[AP_VR_OMEGA], theta_dot);
+    ak_attitude_angles(sequence_of(data), R, &v[AP_VR_THETA], theta, &distance);
+    for (int k = 0; k < 3; k++) {
+        v[AP_VR_THETA + k] = theta[k];
+    }
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            v[AP_VR_R + 3 * i + j] = R[i][j];
+        }
+    }
+    v[AP_VR_SINGULARITY_DISTANCE] = distance;
+    derivatives(data);
+    return AK_EVAL_OK;
+}
+
+/* The lazy group, computed only when one of them is read: the angle rates, omega and alpha in
+ * both frames, from the main group's R and theta. */
+static void evaluate_lazy(ak_model_data *data) {
+    double *v = data->values;
+    const ak_frame frame = frame_of(data);
+    double R[3][3];
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            R[i][j] = v[AP_VR_R + 3 * i + j];
+        }
+    }
+    const bool singular = v[AP_VR_SINGULARITY_DISTANCE] < AK_ATTITUDE_SINGULAR_DISTANCE;
+    ak_attitude_angle_rates(sequence_of(data), frame, &v[AP_VR_THETA], singular, &v[AP_VR_OMEGA],
+                            &v[AP_VR_THETA_DOT]);
     double w1[3], w2[3], other[3];
     acceleration(data, w1, w2);
     double *same_omega = frame == AK_FRAME_BODY ? &v[AP_VR_OMEGA_BODY] : &v[AP_VR_OMEGA_FIXED];
@@ -109,17 +133,7 @@ static ak_eval_status evaluate(ak_model_data *data) {
     for (int k = 0; k < 3; k++) {
         same_alpha[k] = w1[k];
         other_alpha[k] = other[k];
-        v[AP_VR_THETA + k] = theta[k];
-        v[AP_VR_THETA_DOT + k] = theta_dot[k];
     }
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            v[AP_VR_R + 3 * i + j] = R[i][j];
-        }
-    }
-    v[AP_VR_SINGULARITY_DISTANCE] = distance;
-    derivatives(data);
-    return AK_EVAL_OK;
 }
 
 /* q := q0 / |q0| (scaled first, so that no finite q0 overflows), and the principal angles. */
@@ -210,7 +224,7 @@ const ak_model AK_MODEL = {
     .n_value_references = AP_N_VALUE_REFERENCES,
     .n_inputs = AP_N_INPUTS,
     .evaluate = evaluate,
-    .evaluate_lazy = NULL,
+    .evaluate_lazy = evaluate_lazy,
     .check_parameter = check_parameter,
     .jacobian = NULL,
     .output_derivatives = NULL,
