@@ -47,8 +47,10 @@ programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRat
   test_fmi2_instances_EulerRates soak_fmi2_EulerRates"
 echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
 # shellcheck disable=SC2086
-configure_and_build asan $programs test_kinematics
+configure_and_build asan $programs test_kinematics test_attitude abuse_attitude
 run asan+ubsan build-asan/test_kinematics
+run asan+ubsan build-asan/test_attitude
+run asan+ubsan build-asan/abuse_attitude 4 50 "$steps" "$soak"
 for suffix in "" _EulerRates; do
   run asan+ubsan "build-asan/test_fmi2_calls$suffix"
   run asan+ubsan "build-asan/test_fmi2_instances$suffix" 1000 4 "$steps"
@@ -78,7 +80,8 @@ AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asa
   | tail -1
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"
-configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates
+configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates abuse_attitude
+run tsan build-tsan/abuse_attitude 8 50 "$steps" 1000
 for suffix in "" _EulerRates; do
   run tsan "build-tsan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run tsan "build-tsan/test_fmi2_instances$suffix" 64 8 "$steps"
@@ -95,6 +98,7 @@ memcheck() { # program, arguments...: valgrind's summary printed, any error or l
   grep -E "ERROR SUMMARY|in use at exit|total heap usage" "$log" | sed 's/^==[0-9]*== /    valgrind: /'
 }
 memcheck build/test_kinematics
+memcheck build/abuse_attitude 4 20 "$valgrind_steps" "$valgrind_soak"
 for suffix in "" _EulerRates; do
   memcheck "build/test_fmi2_calls$suffix"
   memcheck "build/test_fmi2_instances$suffix" 1000 4 "$valgrind_steps"

@@ -171,6 +171,9 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
      * InitializationMode, so that the master can correct the parameters and call again. */
     if (AK_MODEL.initialize != NULL) {
         if (AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
+            ak_log(instance, AK_LOG_ERROR, fmi2Error,
+                   "fmi2ExitInitializationMode: the parameters give no initial state (see the "
+                   "message before); the instance stays in InitializationMode");
             return fmi2Error;
         }
         ak_instance_inputs_changed(instance);

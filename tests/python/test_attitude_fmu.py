@@ -133,7 +133,10 @@ def test_q0_is_normalized_and_a_zero_q0_is_refused_until_corrected(make_attitude
     assert instance.call("fmi2ExitInitializationMode") == 3
     assert instance.errors() == ["AttitudePropagator: q0 = (0, 0, 0, 0) is not an attitude: the "
                                  "initial quaternion must be finite and not zero; q0[1] = 1 and "
-                                 "the rest 0 is the identity"]
+                                 "the rest 0 is the identity",
+                                 "fmi2ExitInitializationMode: the parameters give no initial "
+                                 "state (see the message before); the instance stays in "
+                                 "InitializationMode"]
     assert instance.call("fmi2DoStep", ctypes.c_double(0.0), ctypes.c_double(0.1), 1) == 3
     assert instance.set({"q0[3]": -1e300}) == 0  # still InitializationMode: settable
     assert instance.call("fmi2ExitInitializationMode") == 0
