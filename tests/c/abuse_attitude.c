@@ -254,6 +254,8 @@ static void run_random_calls(fmi2Type type, long calls, uint64_t seed) {
         const int messages = last.count;
         const fmi2Status status = random_call(c, &seed, &saved);
         const ak_instance *now = c;
+        /* The logger callback moves last.count during the call, which cppcheck cannot see. */
+        /* cppcheck-suppress knownConditionTrueFalse */
         if (status == fmi2Error && (last.count == messages || strstr(last.text, "fmi2") == NULL)) {
             fail("fmi2Error without a message naming the function", k);
         }

@@ -59,15 +59,11 @@ static void derivatives(ak_model_data *data) {
     }
 }
 
-static void rotate(double R[3][3], const double in[3], double out[3]) {
+/* out := R in (body components to fixed, frame body) or R^T in (fixed to body, frame fixed). */
+static void to_other_frame(ak_frame frame, double R[3][3], const double in[3], double out[3]) {
     for (int i = 0; i < 3; i++) {
-        out[i] = R[i][0] * in[0] + R[i][1] * in[1] + R[i][2] * in[2];
-    }
-}
-
-static void rotate_back(double R[3][3], const double in[3], double out[3]) {
-    for (int i = 0; i < 3; i++) {
-        out[i] = R[0][i] * in[0] + R[1][i] * in[1] + R[2][i] * in[2];
+        out[i] = frame == AK_FRAME_BODY ? R[i][0] * in[0] + R[i][1] * in[1] + R[i][2] * in[2]
+                                        : R[0][i] * in[0] + R[1][i] * in[1] + R[2][i] * in[2];
     }
 }
 
@@ -123,13 +119,13 @@ static void evaluate_lazy(ak_model_data *data) {
     double *other_omega = frame == AK_FRAME_BODY ? &v[AP_VR_OMEGA_FIXED] : &v[AP_VR_OMEGA_BODY];
     double *same_alpha = frame == AK_FRAME_BODY ? &v[AP_VR_ALPHA_BODY] : &v[AP_VR_ALPHA_FIXED];
     double *other_alpha = frame == AK_FRAME_BODY ? &v[AP_VR_ALPHA_FIXED] : &v[AP_VR_ALPHA_BODY];
-    /* Body components to fixed: R; back: R^T. Since omega x omega = 0, alpha rotates like omega. */
-    (frame == AK_FRAME_BODY ? rotate : rotate_back)(R, &v[AP_VR_OMEGA], other);
+    /* Since omega x omega = 0, alpha rotates between the frames like omega. */
+    to_other_frame(frame, R, &v[AP_VR_OMEGA], other);
     for (int k = 0; k < 3; k++) {
         same_omega[k] = v[AP_VR_OMEGA + k];
         other_omega[k] = other[k];
     }
-    (frame == AK_FRAME_BODY ? rotate : rotate_back)(R, w1, other);
+    to_other_frame(frame, R, w1, other);
     for (int k = 0; k < 3; k++) {
         same_alpha[k] = w1[k];
         other_alpha[k] = other[k];
