@@ -25,6 +25,9 @@
 #define AK_MAX_VARIABLES 80
 #define AK_MAX_INPUTS 9
 #define AK_MAX_DEPENDENCIES 9
+#define AK_MAX_STATES 4
+/* The knowns of a directional derivative: the inputs, then the continuous states. */
+#define AK_MAX_KNOWNS (AK_MAX_INPUTS + AK_MAX_STATES)
 
 /* Highest order of input derivative a master may give: the inputs follow a polynomial of this
  * degree over a communication step. */
@@ -93,10 +96,11 @@ typedef struct {
 
     /* Optional capabilities: NULL when the model does not have them (the FMI function then
      * refuses with a message naming the modelDescription.xml flag). */
-    /* Exact d output / d input for the listed outputs (value references) and all inputs:
-     * J[i][k] = d y(out[i]) / d u_k. */
+    /* Exact derivatives of the listed unknowns (value references of outputs, or of state
+     * derivatives) with respect to every known: J[i][k] = d y(out[i]) / d u_k for the inputs
+     * k < n_inputs, and J[i][n_inputs + s] = d y(out[i]) / d x_s for the states. */
     void (*jacobian)(const ak_model_data *data, const unsigned int out[], size_t n_out,
-                     double J[][AK_MAX_INPUTS]);
+                     double J[][AK_MAX_KNOWNS]);
     /* First time derivatives of the listed outputs (checked value references of outputs), given
      * the inputs and their derivatives data->input_derivatives. */
     void (*output_derivatives)(ak_model_data *data, const unsigned int vr[], size_t nvr,

@@ -200,7 +200,7 @@ static fmi2Status random_call(fmi2Component c, uint64_t *seed, fmi2FMUstate *sav
     }
     const ak_instance *instance = c;
     const double time = instance->time;
-    switch (next(seed) % 20) {
+    switch (next(seed) % 21) {
     case 0: return fmi2SetReal(c, vr, n, values);
     case 1: return fmi2GetReal(c, vr, n, values);
     case 2: return fmi2SetInteger(c, vr, n, integers);
@@ -236,6 +236,7 @@ static fmi2Status random_call(fmi2Component c, uint64_t *seed, fmi2FMUstate *sav
         return status;
     }
     case 18: return next(seed) % 16 == 0 ? fmi2Reset(c) : fmi2SetupExperiment(c, fmi2False, 0.0, wild(seed), fmi2False, 0.0);
+    case 19: return fmi2GetDirectionalDerivative(c, vr, n, &vr[n % 4], 4 - n % 4, values, &values[4]);
     default: return next(seed) % 32 == 0 ? fmi2Terminate(c) : fmi2OK;
     }
 }

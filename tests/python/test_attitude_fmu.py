@@ -42,7 +42,7 @@ def test_model_description_declares_four_states_and_no_event_indicators(attitude
     assert [d.variable.derivative.name for d in md.derivatives] == Q
     assert md.coSimulation.canInterpolateInputs is True
     assert md.coSimulation.canHandleVariableCommunicationStepSize is True
-    assert md.modelExchange.providesDirectionalDerivative is False  # not provided yet
+    assert md.modelExchange.providesDirectionalDerivative is True  # test_attitude_derivatives.py
     initial = {u.variable.name: {d.name for d in u.dependencies} for u in md.initialUnknowns}
     q0 = {f"q0[{k}]" for k in (1, 2, 3, 4)}
     assert initial["q[1]"] == q0 and initial["der(q[2])"] == q0 | set(OMEGA)

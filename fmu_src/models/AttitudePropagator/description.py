@@ -14,7 +14,7 @@ DESCRIPTION = ("Attitude of a rotating rigid body integrated on unit quaternions
                "velocity and acceleration in both frames as outputs")
 MODEL_DESCRIPTION = "fmu_src/models/AttitudePropagator/modelDescription.xml"
 SOURCES = ["model.c"]
-CAPABILITIES = dict(provides_directional_derivative=False, can_interpolate_inputs=True,
+CAPABILITIES = dict(provides_directional_derivative=True, can_interpolate_inputs=True,
                     max_output_derivative_order=0)
 ENUMERATIONS = {
     "Frame": dict(description="frame of the components of omega and omega_dot",

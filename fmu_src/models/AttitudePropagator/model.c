@@ -197,6 +197,183 @@ static ak_eval_status step(ak_model_data *data, double h) {
     return AK_EVAL_OK;
 }
 
+/* ---- directional derivatives: columns 0..5 the inputs omega, omega_dot; 6..9 the states q ----- */
+
+enum { COLUMN_OMEGA = AP_VR_OMEGA, COLUMN_OMEGA_DOT = AP_VR_OMEGA_DOT, COLUMN_Q = AP_N_INPUTS };
+
+/* What every row needs: the attitude, its angles and the derivatives of R and theta with respect
+ * to the states (core/attitude.h; the unit q is qn = q/|q|, dqn = (I - qn qn^T) dq / |q|). */
+typedef struct {
+    double qn[4];
+    double R[3][3];
+    double dR[4][3][3];    /* d R / d q_k */
+    double theta[3];
+    double dtheta[4][3];   /* d theta / d q_k */
+    bool singular;
+} attitude_partials;
+
+/* theta_dot-like rates of a vector v in `frame` components at the angles theta. */
+static void rates(const ak_model_data *data, ak_frame frame, const attitude_partials *a,
+                  const double v[3], double out[3]) {
+    ak_attitude_angle_rates(sequence_of(data), frame, a->theta, a->singular, v, out);
+}
+
+static void attitude_partials_of(const ak_model_data *data, attitude_partials *a) {
+    const double *q = &data->values[AP_VR_Q];
+    const double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (int k = 0; k < 4; k++) {
+        a->qn[k] = q[k] / norm;
+    }
+    ak_quat_to_matrix(a->qn, a->R);
+    double distance;
+    a->singular = ak_attitude_angles(sequence_of(data), a->R, &data->values[AP_VR_THETA],
+                                     a->theta, &distance);
+    /* R(qn) = I + (quadratic form of qn): d R / d qn_k = R(qn + e_k) - R(qn) - (R(e_k) - I). */
+    double dR_unit[4][3][3];
+    for (int k = 0; k < 4; k++) {
+        double shifted[4] = {a->qn[0], a->qn[1], a->qn[2], a->qn[3]}, e[4] = {0, 0, 0, 0};
+        double Rs[3][3], Re[3][3];
+        shifted[k] += 1.0;
+        e[k] = 1.0;
+        ak_quat_to_matrix(shifted, Rs);
+        ak_quat_to_matrix(e, Re);
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                dR_unit[k][i][j] = Rs[i][j] - a->R[i][j] - Re[i][j] + (i == j ? 1.0 : 0.0);
+            }
+        }
+    }
+    const double conj[4] = {a->qn[0], -a->qn[1], -a->qn[2], -a->qn[3]};
+    for (int k = 0; k < 4; k++) {
+        double dqn[4], body[4];
+        for (int m = 0; m < 4; m++) {
+            dqn[m] = ((m == k ? 1.0 : 0.0) - a->qn[m] * a->qn[k]) / norm;
+        }
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                double sum = 0.0;
+                for (int m = 0; m < 4; m++) {
+                    sum += dR_unit[m][i][j] * dqn[m];
+                }
+                a->dR[k][i][j] = sum;
+            }
+        }
+        /* The body rotation of dqn: dphi = 2 vec(qn* (x) dqn); d theta = W_body^-1 dphi. */
+        ak_quat_multiply(conj, dqn, body);
+        const double dphi[3] = {2.0 * body[1], 2.0 * body[2], 2.0 * body[3]};
+        rates(data, AK_FRAME_BODY, a, dphi, a->dtheta[k]);
+    }
+}
+
+/* The row of one unknown over the 10 knowns. */
+static void jacobian_row(const ak_model_data *data, const attitude_partials *a, unsigned int vr,
+                         double row[AK_MAX_KNOWNS]) {
+    const double *v = data->values;
+    const ak_frame frame = frame_of(data);
+    const double *omega = &v[AP_VR_OMEGA], *omega_dot = &v[AP_VR_OMEGA_DOT];
+    for (int k = 0; k < AK_MAX_KNOWNS; k++) {
+        row[k] = 0.0;
+    }
+    if (vr >= AP_VR_Q && vr < AP_VR_Q + 4) {
+        row[COLUMN_Q + (vr - AP_VR_Q)] = 1.0;
+    } else if (vr >= AP_VR_DER_Q && vr < AP_VR_DER_Q + 4) {
+        /* der(q) = q (x) w / 2 (body) or w (x) q / 2 (fixed), w = (0, omega): bilinear. */
+        const unsigned int c = vr - AP_VR_DER_Q;
+        const double w[4] = {0.0, omega[0], omega[1], omega[2]};
+        for (int k = 0; k < 4; k++) {
+            double e[4] = {0, 0, 0, 0}, out[4];
+            e[k] = 0.5;
+            if (frame == AK_FRAME_BODY) {
+                ak_quat_multiply(e, w, out);
+            } else {
+                ak_quat_multiply(w, e, out);
+            }
+            row[COLUMN_Q + k] = out[c];
+        }
+        for (int m = 0; m < 3; m++) {
+            double e[4] = {0, 0, 0, 0}, out[4];
+            e[1 + m] = 0.5;
+            if (frame == AK_FRAME_BODY) {
+                ak_quat_multiply(&v[AP_VR_Q], e, out);
+            } else {
+                ak_quat_multiply(e, &v[AP_VR_Q], out);
+            }
+            row[COLUMN_OMEGA + m] = out[c];
+        }
+    } else if (vr >= AP_VR_R && vr < AP_VR_R + 9) {
+        const unsigned int i = (vr - AP_VR_R) / 3, j = (vr - AP_VR_R) % 3;
+        for (int k = 0; k < 4; k++) {
+            row[COLUMN_Q + k] = a->dR[k][i][j];
+        }
+    } else if (vr >= AP_VR_THETA && vr < AP_VR_THETA + 3) {
+        for (int k = 0; k < 4; k++) {
+            row[COLUMN_Q + k] = a->dtheta[k][vr - AP_VR_THETA];
+        }
+    } else if (vr >= AP_VR_THETA_DOT && vr < AP_VR_THETA_DOT + 3) {
+        /* theta_dot = W(theta)^-1 omega: d/d omega = W^-1; d/d theta_j = -W^-1 (dW/dtheta_j)
+         * theta_dot, dW/dtheta_j being W_dot for the rates e_j (kinematics_general.h). */
+        const unsigned int c = vr - AP_VR_THETA_DOT;
+        double theta_dot[3], column[3], by_angle[3][3];
+        rates(data, frame, a, omega, theta_dot);
+        for (int m = 0; m < 3; m++) {
+            const double e[3] = {m == 0 ? 1.0 : 0.0, m == 1 ? 1.0 : 0.0, m == 2 ? 1.0 : 0.0};
+            rates(data, frame, a, e, column);
+            row[COLUMN_OMEGA + m] = column[c];
+            double Wf[3][3], Wb[3][3], dWf[3][3], dWb[3][3], moved[3];
+            ak_general_partials(sequence_of(data), a->theta, e, Wf, Wb, dWf, dWb);
+            double (*dW)[3] = frame == AK_FRAME_BODY ? dWb : dWf;
+            for (int r = 0; r < 3; r++) {
+                moved[r] = -(dW[r][0] * theta_dot[0] + dW[r][1] * theta_dot[1] +
+                             dW[r][2] * theta_dot[2]);
+            }
+            rates(data, frame, a, moved, by_angle[m]);
+        }
+        for (int k = 0; k < 4; k++) {
+            row[COLUMN_Q + k] = by_angle[0][c] * a->dtheta[k][0] + by_angle[1][c] * a->dtheta[k][1] +
+                                by_angle[2][c] * a->dtheta[k][2];
+        }
+    } else if (vr >= AP_VR_OMEGA_FIXED && vr < AP_VR_ALPHA_BODY + 3) {
+        /* omega and alpha in both frames: the input itself in its frame, R (or R^T) times it in
+         * the other. */
+        const unsigned int group = (vr - AP_VR_OMEGA_FIXED) / 3, c = (vr - AP_VR_OMEGA_FIXED) % 3;
+        const bool is_alpha = group >= 2, in_body = group % 2 == 1;
+        const int input = is_alpha ? COLUMN_OMEGA_DOT : COLUMN_OMEGA;
+        const double *u = is_alpha ? omega_dot : omega;
+        if (in_body == (frame == AK_FRAME_BODY)) {
+            row[input + (int)c] = 1.0;
+        } else {
+            const bool forward = frame == AK_FRAME_BODY; /* body components to fixed: R */
+            for (int m = 0; m < 3; m++) {
+                row[input + m] = forward ? a->R[c][m] : a->R[m][c];
+            }
+            for (int k = 0; k < 4; k++) {
+                double sum = 0.0;
+                for (int m = 0; m < 3; m++) {
+                    sum += (forward ? a->dR[k][c][m] : a->dR[k][m][c]) * u[m];
+                }
+                row[COLUMN_Q + k] = sum;
+            }
+        }
+    } else if (vr == AP_VR_SINGULARITY_DISTANCE) {
+        /* |cos theta2| (Tait-Bryan) or |sin theta2| (proper Euler). */
+        const double t2 = a->theta[1];
+        const double slope = sequence_of(data)->proper_euler ? (sin(t2) >= 0.0 ? 1.0 : -1.0) * cos(t2)
+                                                             : (cos(t2) >= 0.0 ? -1.0 : 1.0) * sin(t2);
+        for (int k = 0; k < 4; k++) {
+            row[COLUMN_Q + k] = slope * a->dtheta[k][1];
+        }
+    }
+}
+
+static void jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,
+                     double J[][AK_MAX_KNOWNS]) {
+    attitude_partials a;
+    attitude_partials_of(data, &a);
+    for (size_t i = 0; i < n_out; i++) {
+        jacobian_row(data, &a, out[i], J[i]);
+    }
+}
+
 static const char *check_parameter(const ak_variable *variable, double value) {
     switch (variable->value_reference) {
     case AP_VR_SEQUENCE:
@@ -222,7 +399,7 @@ const ak_model AK_MODEL = {
     .evaluate = evaluate,
     .evaluate_lazy = evaluate_lazy,
     .check_parameter = check_parameter,
-    .jacobian = NULL,
+    .jacobian = jacobian,
     .output_derivatives = NULL,
     .can_interpolate_inputs = true,
     /* The unwrapped angles depend on the path: evaluated at every communication point. */
