@@ -8,7 +8,7 @@ import pytest
 
 from attitude_support import (FRAME, OMEGA, OMEGA_DOT, Q, THETA, attitude_error,  # noqa: F401
                               attitude_model_description, attitude_unzipdir, coning,
-                              make_attitude_instance, qexp, qmul, run_cs)
+                              make_attitude_instance, qconj, qexp, qmul, run_cs)
 
 
 @pytest.mark.parametrize("frame", ["body", "fixed"])
@@ -78,6 +78,41 @@ def test_convergence_order(coning_motion, make_attitude_instance, report):
         report(f"inputs {mode}: errors {', '.join(f'{e:.2e}' for e in errors)} at h = "
                f"{', '.join(map(str, hs))}: order {p:.2f}")
         assert abs(p - target) < 0.15, (mode, p, errors)
+
+
+def test_convergence_order_in_fixed_components(coning_motion, make_attitude_instance, report):
+    """The same coning in fixed components (the other sign of the Magnus commutator):
+    omega_f = R omega_b, its derivative R omega_b_dot, the next R (omega_b x omega_b_dot +
+    omega_b_ddot)."""
+    q_of, omega_of, omega_dot_of, omega_ddot_of = coning_motion
+
+    def rotate(t, v):
+        q = np.array(q_of(t), dtype=float)
+        return qmul(qmul(q, np.concatenate([[0.0], v])), qconj(q))[1:]
+
+    def body(f, t):
+        return np.array(f(t), dtype=float)
+
+    def omega_f(t):
+        return rotate(t, body(omega_of, t))
+
+    def omega_dot_f(t):
+        return rotate(t, body(omega_dot_of, t))
+
+    def omega_ddot_f(t):
+        return rotate(t, np.cross(body(omega_of, t), body(omega_dot_of, t)) + body(omega_ddot_of, t))
+
+    hs = [0.04, 0.02, 0.01, 0.005]
+    errors = []
+    for h in hs:
+        instance = make_attitude_instance(name=f"fixed{h}")
+        assert instance.set_integer({"frame": FRAME["fixed"]}) == 0
+        errors.append(run_cs(instance, q_of, omega_f, omega_dot_f, h, 2.0, "derivatives2",
+                             omega_ddot_of=omega_ddot_f)[0])
+    p = order(hs, errors)
+    report(f"fixed frame, derivatives orders 1 and 2: errors {', '.join(f'{e:.2e}' for e in errors)}: "
+           f"order {p:.2f}")
+    assert abs(p - 4.0) < 0.15, errors
 
 
 def test_round_trip_through_gimbal_lock(make_instance, make_attitude_instance, report):
