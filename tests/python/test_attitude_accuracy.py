@@ -41,6 +41,7 @@ def coning_motion():
     return coning(beta=0.2, rate=2 * np.pi)
 
 
+@pytest.mark.slow
 def test_coning_motion_100_s(coning_motion, make_attitude_instance, report):
     q_of, omega_of, omega_dot_of, omega_ddot_of = coning_motion
     errors = {}

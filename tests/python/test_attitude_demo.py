@@ -1,10 +1,12 @@
 """demo/gimbal_lock.py, bounded: it runs through the first gimbal lock (t = 1 s), writes its plot
 and reports an attitude error at the method's level."""
 import gimbal_lock  # demo/ is on sys.path (conftest.py)
+import pytest
 
 from attitude_support import ATTITUDE_FMU_PATH
 
 
+@pytest.mark.slow
 def test_gimbal_lock_demo_runs_and_writes_its_plot(tmp_path):
     output = tmp_path / "gimbal_lock.png"
     worst = gimbal_lock.main(["--fmu", str(ATTITUDE_FMU_PATH), "--stop-time", "1.5",

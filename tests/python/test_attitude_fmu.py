@@ -303,6 +303,7 @@ def test_norm_kept_over_many_steps_of_a_tumbling_body(make_attitude_instance, re
     assert worst < 1e-15
 
 
+@pytest.mark.slow
 def test_source_fmu_compiles_with_fmpy_and_simulates_identically(attitude_unzipdir, tmp_path):
     """sources/ of AttitudePropagator.fmu (its own list: attitude.c and its variable table) rebuilt
     by fmpy into a binary that computes the same bits as the packaged one."""
