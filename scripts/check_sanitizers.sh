@@ -60,7 +60,8 @@ done
 # The instrumented binaries inside a real master: the whole pytest suite through fmpy.
 # Leak detection is off here only because the Python interpreter itself does not free everything
 # at exit; the FMU's leaks are checked by the C programs above and by valgrind below.
-configure_and_build asan fmu_AngularKinematics fmu_EulerRates model_info_AngularKinematics model_info_EulerRates
+configure_and_build asan fmu_AngularKinematics fmu_EulerRates fmu_AttitudePropagator \
+  model_info_AngularKinematics model_info_EulerRates model_info_AttitudePropagator
 # --quick: the tests of the FMI layer only (calls, bad input, FMU state, model exchange,
 # derivatives, EulerRates); the whole suite takes a minute and a half under ASan. Never
 # tests/python/test_windows_binary.py: it checks the Windows DLL packaged in dist/*.fmu, which the ASan
@@ -68,13 +69,15 @@ configure_and_build asan fmu_AngularKinematics fmu_EulerRates model_info_Angular
 if [ "$quick" = --quick ]; then
   suite=$(printf 'tests/python/%s ' test_fmi_calls.py test_bad_input.py test_fmu_state.py \
     test_model_exchange.py test_directional_derivatives.py test_output_derivatives.py \
-    test_input_interpolation.py test_euler_rates.py test_value_runs.py)
+    test_input_interpolation.py test_euler_rates.py test_value_runs.py test_attitude_fmu.py \
+    test_attitude_derivatives.py)
 else
   suite="tests/python --ignore=tests/python/test_windows_binary.py"
 fi
 echo "--- asan+ubsan: pytest through fmpy with build-asan/dist/{AngularKinematics,EulerRates}.fmu"
 # shellcheck disable=SC2086
 AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asan/dist/EulerRates.fmu" \
+  AK_ATTITUDE_FMU="$PWD/build-asan/dist/AttitudePropagator.fmu" \
   LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)" \
   ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest $suite -q -p no:cacheprovider \
   | tail -1
