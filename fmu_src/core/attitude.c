@@ -84,6 +84,24 @@ void ak_attitude_step_vector(ak_frame frame, double c[4][3], double h, double om
     }
 }
 
+void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
+                             const double new_vector[3], double q[4]) {
+    const double back[3] = {-old_vector[0], -old_vector[1], -old_vector[2]};
+    double undo[4], redo[4], change[4], next[4];
+    ak_quat_exp(back, undo);
+    ak_quat_exp(new_vector, redo);
+    if (frame == AK_FRAME_BODY) {
+        ak_quat_multiply(undo, redo, change);
+        ak_quat_multiply(q, change, next);
+    } else {
+        ak_quat_multiply(redo, undo, change);
+        ak_quat_multiply(change, q, next);
+    }
+    for (int k = 0; k < 4; k++) {
+        q[k] = next[k];
+    }
+}
+
 bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction) {
     double v[3], e[4], next[4];
     ak_attitude_step_vector(frame, c, h, v);

@@ -35,6 +35,12 @@
  *   omega over the step, which makes any method second order in h; the cubic errs by O(h^4), so
  *   the integral by O(h^5) and the method is fourth order. Constant omega gives c1 = c2 = c3 = 0
  *   exactly. Held inputs (no derivatives given) are held: c0 = w0 and nothing else.
+ *   The first step with derivatives has no history: taken with the Taylor polynomial, its
+ *   O(h^3) error would stay in every later result (third order). So at the next step, when
+ *   omega and omega_dot at its end are known, it is retaken: the Hermite cubic over it (the same
+ *   formulas with hp = -h) gives Omega_new, and q := q (x) exp(-Omega_old) (x) exp(Omega_new)
+ *   (ak_attitude_retake_step). The attitude reported at the end of that first step keeps its
+ *   O(h^3) error; every later one is fourth order.
  *   The 4th-order Magnus method with the two Gauss points s_1,2 = h (1/2 -+ sqrt(3)/6),
  *   A_i = (0, omega(s_i)) / 2, is, for the body form dq/dt = q (x) A(t):
  *       q(t + h) = q(t) (x) exp(Omega),  Omega = h (A1 + A2) / 2 + (sqrt(3)/12) h^2 [A1, A2],
@@ -115,6 +121,11 @@ void ak_attitude_input_polynomial(const double w0[3], const double w1[3], const 
 
 /* The rotation vector Omega of one step (section 4) for omega(s) = sum c[m] s^m, step h. */
 void ak_attitude_step_vector(ak_frame frame, double c[4][3], double h, double omega_vector[3]);
+
+/* q := q (x) exp(-old) (x) exp(new) (body) or exp(new) (x) exp(-old) (x) q (fixed): a step that
+ * was taken with the rotation vector `old` retaken with `new` (section 4, the first step). */
+void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
+                             const double new_vector[3], double q[4]);
 
 /* q := q advanced over h (section 4). Returns false, q untouched, when the result is not
  * finite (a huge omega h). *correction (may be NULL) receives |q_new - q_uncorrected|, the size

@@ -26,11 +26,13 @@ enum {
     AP_VR_OMEGA_PREVIOUS = 48,
     AP_VR_OMEGA_DOT_PREVIOUS = 51,
     AP_VR_H_PREVIOUS = 54,
+    AP_VR_FIRST_STEP_VECTOR = 55,
+    AP_VR_FIRST_STEP_PENDING = 58,
     AP_VR_Q0 = 44,
     AP_N_INPUTS = 6,
     AP_N_OUTPUTS = 32,
     AP_N_STATES = 4,
-    AP_N_VALUE_REFERENCES = 55 /* highest value reference + 1 */
+    AP_N_VALUE_REFERENCES = 59 /* highest value reference + 1 */
 };
 
 extern const ak_variable AP_VARIABLES[AP_N_VALUE_REFERENCES];

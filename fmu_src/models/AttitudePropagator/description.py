@@ -91,6 +91,13 @@ VARIABLES = [
     dict(name="h_previous", vr=54, causality="local", type="Time",
          description="co-simulation: the previous communication step size when it had input "
                      "derivatives, else 0 (no history)", depends=[]),
+    dict(name="first_step_vector", vr=55, shape=(3,), causality="local", type="Dimensionless",
+         description="co-simulation: component {i} of the rotation vector Omega of the previous "
+                     "step when it had derivatives but no history (Taylor), kept to correct that "
+                     "step once its end values are known", depends=[]),
+    dict(name="first_step_pending", vr=58, causality="local", type="Dimensionless",
+         description="co-simulation: 1 while the previous step awaits that correction, else 0",
+         depends=[]),
     dict(name="q0", vr=44, shape=(4,), causality="parameter", type="Dimensionless",
          start=lambda i: 1.0 if i == 1 else 0.0, min=-1.7976931348623157e308, max=1.7976931348623157e308,
          description="initial quaternion, component {i} (scalar first); normalized at "

@@ -171,8 +171,18 @@ static ak_eval_status step(ak_model_data *data, double h) {
     const bool derivatives_given = w1[0] != 0.0 || w1[1] != 0.0 || w1[2] != 0.0 ||
                                    w2[0] != 0.0 || w2[1] != 0.0 || w2[2] != 0.0;
     const double hp = v[AP_VR_H_PREVIOUS];
+    const bool history = derivatives_given && hp > 0.0;
+    double q[4] = {v[AP_VR_Q], v[AP_VR_Q + 1], v[AP_VR_Q + 2], v[AP_VR_Q + 3]};
+    if (history && v[AP_VR_FIRST_STEP_PENDING] != 0.0) {
+        /* Retake the first step with the Hermite cubic over it (core/attitude.h, section 4). */
+        const double none[3] = {0.0, 0.0, 0.0};
+        double previous[4][3], retaken[3];
+        ak_attitude_input_polynomial(&v[AP_VR_OMEGA_PREVIOUS], &v[AP_VR_OMEGA_DOT_PREVIOUS], none,
+                                     &v[AP_VR_OMEGA], w1, -hp, previous);
+        ak_attitude_step_vector(frame_of(data), previous, hp, retaken);
+        ak_attitude_retake_step(frame_of(data), &v[AP_VR_FIRST_STEP_VECTOR], retaken, q);
+    }
     if (derivatives_given) {
-        const bool history = hp > 0.0;
         ak_attitude_input_polynomial(&v[AP_VR_OMEGA], w1, w2,
                                      history ? &v[AP_VR_OMEGA_PREVIOUS] : NULL,
                                      history ? &v[AP_VR_OMEGA_DOT_PREVIOUS] : NULL, hp, c);
@@ -182,18 +192,28 @@ static ak_eval_status step(ak_model_data *data, double h) {
             c[1][k] = c[2][k] = c[3][k] = 0.0;
         }
     }
-    if (!ak_attitude_step(frame_of(data), c, h, &v[AP_VR_Q], NULL)) {
+    if (!ak_attitude_step(frame_of(data), c, h, q, NULL)) {
         ak_model_log(data, AK_LOG_ERROR, AK_STATUS_ERROR,
                      "fmi2DoStep: omega = (%g, %g, %g) over communicationStepSize = %g gives a "
                      "rotation that is not finite; the state q is left as it was",
                      v[AP_VR_OMEGA], v[AP_VR_OMEGA + 1], v[AP_VR_OMEGA + 2], h);
         return AK_EVAL_FAILED;
     }
+    const bool first = derivatives_given && !history;
+    double taken[3] = {0.0, 0.0, 0.0};
+    if (first) {
+        ak_attitude_step_vector(frame_of(data), c, h, taken);
+    }
+    for (int k = 0; k < 4; k++) {
+        v[AP_VR_Q + k] = q[k];
+    }
     for (int k = 0; k < 3; k++) {
         v[AP_VR_OMEGA_PREVIOUS + k] = v[AP_VR_OMEGA + k];
         v[AP_VR_OMEGA_DOT_PREVIOUS + k] = w1[k];
+        v[AP_VR_FIRST_STEP_VECTOR + k] = taken[k];
     }
     v[AP_VR_H_PREVIOUS] = derivatives_given ? h : 0.0;
+    v[AP_VR_FIRST_STEP_PENDING] = first ? 1.0 : 0.0;
     return AK_EVAL_OK;
 }
 
