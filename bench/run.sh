@@ -6,7 +6,9 @@
 #   2. instruction counts per step under callgrind, when valgrind is installed (stable where
 #      timings are noisy);
 #   3. the fmpy comparison (bench/fmpy_bench.py): simulate_fmu with AngularKinematics vs. the
-#      pass-through FMU.
+#      pass-through FMU;
+#   4. AttitudePropagator (bench/bench_attitude.c): set omega + fmi2DoStep + get q and theta vs.
+#      the bare quaternion update, over the largest step count of --steps.
 # It asserts no timing; it fails only if something does not run or the FMU evaluates when it
 # should not (the driver counts the evaluations through the logCalls trace).
 #
@@ -125,4 +127,8 @@ callgrind_table() {
   .venv/bin/python bench/fmpy_bench.py --fmu dist/AngularKinematics.fmu \
     --passthrough build/passthrough/PassThrough.so --steps "$fmpy_steps" \
     --repeats "$fmpy_repeats"
+  echo
+  # AttitudePropagator (bench/bench_attitude.c): one CS step beside the bare quaternion update.
+  build/bench/bench_attitude build/fmu/binaries/linux64/AttitudePropagator.so \
+    --steps "${steps##*,}" --repeats "$repeats"
 } | tee build/last-run.md

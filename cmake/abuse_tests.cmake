@@ -56,3 +56,19 @@ endfunction()
 
 ak_add_abuse_tests(AngularKinematics fmi2_bad_input_angular_kinematics.c)
 ak_add_abuse_tests(EulerRates fmi2_bad_input_euler_rates.c)
+
+# AttitudePropagator (the first model with continuous states, 6 inputs): its own abuse program
+# until the shared harness above covers it (tests/c/abuse_attitude.c: many instances in threads,
+# random calls with bad arguments in both interfaces, every allocation freed).
+add_library(ak_fmu_for_tests_AttitudePropagator STATIC ${AK_MODEL_COMMON_SOURCES}
+            ${AK_MODEL_SOURCES_AttitudePropagator} ${AK_FMI2_SOURCES})
+target_include_directories(ak_fmu_for_tests_AttitudePropagator PUBLIC ${AK_INCLUDE_DIRS}
+                           fmu_src/models/AttitudePropagator "${FMI2_HEADERS_DIR}")
+target_compile_options(ak_fmu_for_tests_AttitudePropagator PRIVATE ${AK_WARNINGS})
+target_link_libraries(ak_fmu_for_tests_AttitudePropagator PUBLIC kinematics_core)
+if(NOT AK_FUZZ)
+  add_executable(abuse_attitude tests/c/abuse_attitude.c)
+  target_compile_options(abuse_attitude PRIVATE ${AK_WARNINGS})
+  target_link_libraries(abuse_attitude PRIVATE ak_fmu_for_tests_AttitudePropagator Threads::Threads)
+  add_test(NAME abuse_AttitudePropagator COMMAND abuse_attitude 4 50 200 200000)
+endif()

@@ -1,6 +1,6 @@
 # The FMI 3 abuse program (tests/c/fmi3_abuse.c), per model, linked with that model's FMI 3 FMU
 # sources; instrumented when AK_SANITIZE is set. build*/fmi3_abuse_<Model>.
-foreach(_model IN LISTS AK_MODELS)
+foreach(_model IN LISTS AK_FMI3_MODELS)
   add_library(ak_fmu3_for_tests_${_model} STATIC ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${_model}}
                                                ${AK_FMI3_ARRAYS_${_model}} ${AK_FMI3_SOURCES})
   target_include_directories(ak_fmu3_for_tests_${_model} PUBLIC ${AK_FMI3_INCLUDE_DIRS}

@@ -103,7 +103,7 @@ function(ak_add_fmu3 model)
   add_custom_target(fmu3_${model} ALL DEPENDS "${_fmu}")
 endfunction()
 
-foreach(_model IN LISTS AK_MODELS)
+foreach(_model IN LISTS AK_FMI3_MODELS)
   ak_add_fmu3(${_model})
 endforeach()
 

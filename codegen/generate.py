@@ -16,6 +16,7 @@
 The generated files are committed (docs/architecture.md says why); nothing here needs more than
 the Python standard library."""
 import argparse
+import re
 import sys
 
 from codegen import fmi3, project
@@ -35,6 +36,10 @@ def xml_escape(text):
 
 def constant_prefix(model):
     return model.c_prefix
+
+def c_identifier(name):
+    """The C constant of a description name: "theta_dot" -> THETA_DOT, "der(q)" -> DER_Q."""
+    return re.sub(r"[^A-Za-z0-9]+", "_", name).strip("_").upper()
 
 
 # --- C ------------------------------------------------------------------------------------------
@@ -81,10 +86,13 @@ def variables_h(model):
              f"#ifndef {guard}", f"#define {guard}", "", '#include "model.h"', "",
              f'#define {p}_GUID "{model.guid}"', "", "enum {"]
     for entry in model.arrays:
-        lines.append(f"    {p}_VR_{entry['name'].upper()} = {entry['vr']},")
+        lines.append(f"    {p}_VR_{c_identifier(entry['name'])} = {entry['vr']},")
     n_slots = max(s.vr for s in model.scalars) + 1
     lines += [f"    {p}_N_INPUTS = {len(model.by_causality('input'))},",
-              f"    {p}_N_OUTPUTS = {len(model.by_causality('output'))},",
+              f"    {p}_N_OUTPUTS = {len(model.by_causality('output'))},"]
+    if model.states:
+        lines.append(f"    {p}_N_STATES = {len(model.states)},")
+    lines += [
               f"    {p}_N_VALUE_REFERENCES = {n_slots} /* highest value reference + 1 */",
               "};", "",
               f"extern const ak_variable {p}_VARIABLES[{p}_N_VALUE_REFERENCES];", "", "#endif", ""]
@@ -98,13 +106,14 @@ def variables_c(model):
              f'#include "{model.name}_variables.h"', "",
              f"const ak_variable {p}_VARIABLES[{p}_N_VALUE_REFERENCES] = {{"]
     for s in model.scalars:
-        deps = "{" + ", ".join(str(d) for d in s.depends) + "}" if s.depends else "{0}"
-        unit = project.TYPES.get(s.type, (None, "", None))[1]
+        inputs = model.input_dependencies(s)
+        deps = "{" + ", ".join(str(d) for d in inputs) + "}" if inputs else "{0}"
+        unit = {**project.TYPES, **project.OPTIONAL_TYPES}.get(s.type, (None, "", None))[1]
         group = "AK_GROUP_LAZY" if s.group == "lazy" else "AK_GROUP_MAIN"
         lines.append(
             f"    [{s.vr}] = {{{s.vr}, {c_string(s.name)}, AK_CAUSALITY_{s.causality.upper()}, "
             f"AK_TYPE_{s.fmi_type.upper()}, {group}, {c_string(s.type)}, {c_string(unit)}, "
-            f"{s.start!r}, {s.min!r}, {s.max!r}, {c_string(s.description)}, {len(s.depends)}, "
+            f"{s.start!r}, {s.min!r}, {s.max!r}, {c_string(s.description)}, {len(inputs)}, "
             f"{deps}}},")
     lines += ["};", ""]
     return "\n".join(lines)
@@ -201,11 +210,14 @@ def model_description(model):
     </Unit>
     <Unit name="1/s">
       <BaseUnit s="-1"/>
-    </Unit>
-  </UnitDefinitions>
-
-  <TypeDefinitions>''']
-    for name, (quantity, unit, display) in project.TYPES.items():
+    </Unit>''']
+    used = {s.type for s in model.scalars}
+    types = dict(project.TYPES)
+    types.update({name: t for name, t in project.OPTIONAL_TYPES.items() if name in used})
+    if "Time" in used:
+        out += ['    <Unit name="s">', '      <BaseUnit s="1"/>', "    </Unit>"]
+    out += ["  </UnitDefinitions>", "", "  <TypeDefinitions>"]
+    for name, (quantity, unit, display) in types.items():
         attributes = "".join(f' {key}="{value}"' for key, value in
                              (("quantity", quantity), ("unit", unit or None),
                               ("displayUnit", display)) if value)
@@ -236,18 +248,35 @@ def model_description(model):
         if s.fmi_type == "Integer":
             element = f'<Enumeration declaredType="{s.type}" start="{int(s.start)}"/>'
         else:
-            start = f' start="{s.start!r}"' if s.causality != "output" else ""
+            start = f' start="{s.start!r}"' if s.causality in ("input", "parameter") else ""
             bounds = f' min="{s.min!r}" max="{s.max!r}"' if s.causality == "parameter" else ""
-            element = f'<Real declaredType="{s.type}"{start}{bounds}/>'
+            derivative = (f' derivative="{index[s.derivative_of]}"'
+                          if s.derivative_of is not None else "")
+            element = f'<Real declaredType="{s.type}"{derivative}{start}{bounds}/>'
         out += [f"    <!-- index {position} -->",
                 f'    <ScalarVariable name="{s.name}" valueReference="{s.vr}" '
                 f'description="{xml_escape(s.description)}" {attributes}>',
                 f"      {element}", "    </ScalarVariable>"]
     out += ["  </ModelVariables>", "", "  <ModelStructure>"]
-    for section in ("Outputs", "InitialUnknowns"):
+    by_vr = model.scalars_by_vr
+
+    def initial(vrs):
+        """In Initialization Mode a state is known through the parameters of its start."""
+        return sorted({k for d in vrs for k in (by_vr[d].initial_depends if by_vr[d].state
+                                                 else [d])})
+
+    initial_unknowns = sorted({s.vr for s in model.by_causality("output") + model.states
+                               + model.derivatives}, key=lambda vr: index[vr])
+    sections = [("Outputs", [(s, s.depends) for s in model.by_causality("output")]),
+                ("Derivatives", [(s, s.depends) for s in model.derivatives]),
+                ("InitialUnknowns", [(by_vr[vr], initial(by_vr[vr].depends))
+                                     for vr in initial_unknowns])]
+    for section, unknowns in sections:
+        if not unknowns:
+            continue
         out.append(f"    <{section}>")
-        for s in model.by_causality("output"):
-            deps = " ".join(str(index[d]) for d in s.depends)
+        for s, depends in unknowns:
+            deps = " ".join(str(index[d]) for d in depends)
             out.append(f'      <Unknown index="{index[s.vr]}" dependencies="{deps}"/>  '
                        f"<!-- {s.name} -->")
         out.append(f"    </{section}>")
@@ -270,11 +299,13 @@ def cmake_lists(models):
            f"set(AK_FMI2_SOURCES\n{cmake_list(project.FMI2_SOURCES)})",
            f"set(AK_FMI2_HEADERS\n{cmake_list(project.FMI2_HEADERS)})",
            f"set(AK_FMI3_SOURCES\n{cmake_list(fmi3.FMI3_SOURCES)})",
-           f"set(AK_FMI3_HEADERS\n{cmake_list(fmi3.FMI3_HEADERS)})"]
+           f"set(AK_FMI3_HEADERS\n{cmake_list(fmi3.FMI3_HEADERS)})",
+           f"set(AK_FMI3_MODELS {' '.join(project.FMI3_MODELS)})"]
     for m in models:
         description = m.model_description.relative_to(ROOT).as_posix()
-        out += [f"set(AK_FMI3_ARRAYS_{m.name}\n  fmu_src/models/{m.name}/fmi3/{m.name}_fmi3_arrays.c)",
-                f"set(AK_MODEL_SOURCES_{m.name}\n{cmake_list(m.sources)})",
+        if m.name in project.FMI3_MODELS:
+            out.append(f"set(AK_FMI3_ARRAYS_{m.name}\n  fmu_src/models/{m.name}/fmi3/{m.name}_fmi3_arrays.c)")
+        out += [f"set(AK_MODEL_SOURCES_{m.name}\n{cmake_list(m.sources)})",
                 f"set(AK_MODEL_HEADERS_{m.name}\n{cmake_list(m.headers)})",
                 f'set(AK_MODEL_DESCRIPTION_{m.name} "{description}")']
     return "\n".join(out) + "\n"
@@ -291,12 +322,15 @@ def outputs():
         files[m.folder / f"{m.name}_variables.c"] = variables_c(m)
         files[m.folder / "buildDescription.xml"] = build_description(m)
         files[m.model_description] = model_description(m)
+        if m.name not in project.FMI3_MODELS:
+            continue
         folder = m.folder / "fmi3"
         files[folder / "modelDescription.xml"] = fmi3.model_description(m)
         files[folder / "buildDescription.xml"] = fmi3.build_description(m, flat_fmi3_sources(m))
         files[folder / f"{m.name}_fmi3_arrays.c"] = fmi3.arrays_c(m)
         files[folder / "documentation" / "index.html"] = fmi3.documentation(m)
-    files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(models)
+    files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(
+        [m for m in models if m.name in project.FMI3_MODELS])
     return files
 
 

@@ -19,7 +19,7 @@ class Scalar:
     base: str              # the description's variable name: "R" for "R[2,3]"
     indices: tuple         # 1-based indices within the array; () for a scalar
     vr: int
-    causality: str         # input, output, parameter
+    causality: str         # input, output, parameter, local
     type: str              # declared type: Angle, ..., Sequence, Frame
     fmi_type: str          # Real or Integer (Enumerations are Integers in the C table)
     group: str             # outputs: main or lazy
@@ -27,7 +27,10 @@ class Scalar:
     min: float
     max: float
     description: str
-    depends: list = field(default_factory=list)  # value references of inputs
+    depends: list = field(default_factory=list)  # value references of inputs and states
+    state: bool = False    # a continuous state (model exchange)
+    derivative_of: int = None  # the value reference of the state this is der() of
+    initial_depends: list = field(default_factory=list)  # states: parameters their start is from
 
 
 @dataclass
@@ -54,6 +57,24 @@ class Model:
     def by_causality(self, causality):
         return [s for s in self.scalars if s.causality == causality]
 
+    @property
+    def states(self):
+        return [s for s in self.scalars if s.state]
+
+    @property
+    def derivatives(self):
+        """der(x) of each state, in the order of the states."""
+        by_state = {s.derivative_of: s for s in self.scalars if s.derivative_of is not None}
+        return [by_state[s.vr] for s in self.states]
+
+    def input_dependencies(self, scalar):
+        """The inputs among a scalar's dependencies (the C table lists only those)."""
+        return [vr for vr in scalar.depends if self.scalars_by_vr[vr].causality == "input"]
+
+    @property
+    def scalars_by_vr(self):
+        return {s.vr: s for s in self.scalars}
+
 
 def _load_module(path):
     spec = importlib.util.spec_from_file_location(f"description_{path.parent.name}", path)
@@ -63,6 +84,9 @@ def _load_module(path):
 
 
 def _element_name(base, indices):
+    """theta[2], R[1,3]; a derivative "der(q)" names its elements der(q[2]) (FMI 2.0, 2.2.9)."""
+    if base.startswith("der(") and indices:
+        return f"der({_element_name(base[4:-1], indices)})"
     return f"{base}[{','.join(str(i) for i in indices)}]" if indices else base
 
 
@@ -83,7 +107,8 @@ def load(name):
                 low, high = 1.0, float(len(items))
             else:
                 fmi_type = "Real"
-                start = float(entry.get("start", 0.0))
+                start = entry.get("start", 0.0)
+                start = float(start(*indices) if callable(start) else start)
                 low, high = float(entry.get("min", 0.0)), float(entry.get("max", 0.0))
             keys = dict(zip("ij", indices))
             scalars.append(Scalar(
@@ -91,20 +116,31 @@ def load(name):
                 vr=entry["vr"] + offset, causality=entry["causality"], type=declared,
                 fmi_type=fmi_type, group=entry.get("group", "main"), start=start, min=low,
                 max=high, description=entry["description"].format(**keys),
-                depends=entry.get("depends", [])))
+                depends=entry.get("depends", []), state=entry.get("state", False),
+                initial_depends=entry.get("initial_depends", [])))
+            if "derivative_of" in entry:
+                scalars[-1].derivative_of = _element_name(entry["derivative_of"], indices)
     by_name = {s.name: s for s in scalars}
+    for s in scalars:
+        if s.derivative_of is not None:
+            s.derivative_of = by_name[s.derivative_of].vr
+
     # Dependencies: whole inputs ("theta") or, per element, a function of the indices.
+    def resolve(names):
+        vrs = []
+        for name in names:
+            if name in by_name:
+                vrs.append(by_name[name].vr)
+            else:
+                vrs += [t.vr for t in scalars if t.base == name]
+        return sorted(vrs)
+
     for s in scalars:
         wanted = s.depends(*s.indices) if callable(s.depends) else s.depends
-        vrs = []
-        for input_name in wanted:
-            if input_name in by_name:
-                vrs.append(by_name[input_name].vr)
-            else:
-                vrs += [t.vr for t in scalars if t.base == input_name]
-        assert all(by_name_causality == "input" for by_name_causality in
-                   (t.causality for t in scalars if t.vr in vrs)), f"{s.name}: depends on a non-input"
-        s.depends = sorted(vrs)
+        s.depends = resolve(wanted)
+        assert all(t.causality == "input" or t.state for t in scalars if t.vr in s.depends), \
+            f"{s.name}: depends on a variable that is neither an input nor a state"
+        s.initial_depends = resolve(s.initial_depends)
     scalars.sort(key=lambda s: s.vr)
     _check(name, scalars)
     folder = f"models/{name}"
@@ -125,7 +161,14 @@ def _check(name, scalars):
     assert inputs == list(range(len(inputs))), (
         f"{name}: the inputs must hold the value references 0 .. n_inputs - 1 (models/model.h)")
     for s in scalars:
-        assert re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[[0-9,]+\])?", s.name), s.name
+        assert re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\[[0-9,]+\])?|der\([A-Za-z_][A-Za-z0-9_]*"
+                            r"(\[[0-9,]+\])?\)", s.name), s.name
+    states = [s for s in scalars if s.state]
+    derivatives = [s for s in scalars if s.derivative_of is not None]
+    assert sorted(d.derivative_of for d in derivatives) == sorted(s.vr for s in states), (
+        f"{name}: every state needs exactly one derivative and every derivative a state")
+    assert all(s.causality in ("output", "local") for s in states + derivatives), (
+        f"{name}: states and derivatives are outputs or locals")
 
 
 def all_models():

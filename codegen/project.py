@@ -52,6 +52,10 @@ TYPES = {
     "Dimensionless": (None, "", None),
     "Frequency": ("Frequency", "1/s", None),
 }
+# Declared types written only into the modelDescription.xml of a model that uses them.
+OPTIONAL_TYPES = {
+    "Time": ("Time", "s", None),
+}
 # Enumerations every model may use; a model's description can add its own.
 ENUMERATIONS = {
     "Sequence": dict(
@@ -62,9 +66,9 @@ ENUMERATIONS = {
 
 # Sources, relative to fmu_src/, in the order they are compiled and listed in <SourceFiles>.
 CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c",
-                "core/kinematics_general_jacobian.c"]
+                "core/kinematics_general_jacobian.c", "core/attitude.c"]
 CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h",
-                "core/kinematics_general_jacobian.h"]
+                "core/kinematics_general_jacobian.h", "core/attitude.h"]
 MODEL_SOURCES = ["models/model_log.c"]  # beside every model
 FMI2_SOURCES = ["fmi2/fmi2_instance.c", "fmi2/fmi2_logging.c", "fmi2/fmi2_state_machine.c",
                 "fmi2/fmi2_lifecycle.c", "fmi2/fmi2_values.c", "fmi2/fmi2_cosimulation.c",
@@ -73,4 +77,7 @@ FMI2_HEADERS = ["fmi2/fmi2_instance.h", "fmi2/fmi2_logging.h", "fmi2/fmi2_state_
                 "fmi2/fmi2_derivatives.h", "models/model.h", "models/log_categories.h"]
 
 # The models, each a folder fmu_src/models/<name>/ with description.py.
-MODELS = ["AngularKinematics", "EulerRates"]
+MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator"]
+# The models built as FMI 3.0 FMUs too (dist/fmi3/); AttitudePropagator's continuous states are
+# not wired into the FMI 3 layer yet.
+FMI3_MODELS = ["AngularKinematics", "EulerRates"]

@@ -48,8 +48,10 @@ programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRat
   fmi3_abuse_EulerRates"
 echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
 # shellcheck disable=SC2086
-configure_and_build asan $programs test_kinematics
+configure_and_build asan $programs test_kinematics test_attitude abuse_attitude
 run asan+ubsan build-asan/test_kinematics
+run asan+ubsan build-asan/test_attitude
+run asan+ubsan build-asan/abuse_attitude 4 50 "$steps" "$soak"
 for suffix in "" _EulerRates; do
   run asan+ubsan "build-asan/test_fmi2_calls$suffix"
   run asan+ubsan "build-asan/test_fmi2_instances$suffix" 1000 4 "$steps"
@@ -64,8 +66,9 @@ done
 # The instrumented binaries inside a real master: the whole pytest suite through fmpy.
 # Leak detection is off here only because the Python interpreter itself does not free everything
 # at exit; the FMU's leaks are checked by the C programs above and by valgrind below.
-configure_and_build asan fmu_AngularKinematics fmu_EulerRates fmu3_AngularKinematics fmu3_EulerRates \
-  model_info_AngularKinematics model_info_EulerRates
+configure_and_build asan fmu_AngularKinematics fmu_EulerRates fmu_AttitudePropagator \
+  fmu3_AngularKinematics fmu3_EulerRates \
+  model_info_AngularKinematics model_info_EulerRates model_info_AttitudePropagator
 # --quick: the tests of the FMI layer only (calls, bad input, FMU state, model exchange,
 # derivatives, EulerRates); the whole suite takes a minute and a half under ASan. Never
 # tests/python/test_windows_binary.py: it checks the Windows DLL packaged in dist/*.fmu, which the ASan
@@ -75,7 +78,7 @@ if [ "$quick" = --quick ]; then
     test_model_exchange.py test_directional_derivatives.py test_output_derivatives.py \
     test_input_interpolation.py test_euler_rates.py test_value_runs.py test_fmi3_state_machine.py \
     test_fmi3_bad_input.py test_fmi3_fmu_state.py test_fmi3_derivatives.py test_fmi3_cosimulation.py \
-    test_fmi3_bit_identity.py)
+    test_fmi3_bit_identity.py test_attitude_fmu.py test_attitude_derivatives.py)
 else
   suite="tests/python --ignore=tests/python/test_windows_binary.py --ignore=tests/python/test_fmi3_platforms.py"
 fi
@@ -83,13 +86,15 @@ echo "--- asan+ubsan: pytest through fmpy with build-asan/dist/{AngularKinematic
 # shellcheck disable=SC2086
 AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asan/dist/EulerRates.fmu" \
   AK_FMU3_DIR="$PWD/build-asan/dist/fmi3" \
+  AK_ATTITUDE_FMU="$PWD/build-asan/dist/AttitudePropagator.fmu" \
   LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)" \
   ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest $suite -q -p no:cacheprovider \
   | tail -1
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"
 configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates \
-  fmi3_abuse_AngularKinematics fmi3_abuse_EulerRates
+  fmi3_abuse_AngularKinematics fmi3_abuse_EulerRates abuse_attitude
+run tsan build-tsan/abuse_attitude 8 50 "$steps" 1000
 for suffix in "" _EulerRates; do
   run tsan "build-tsan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run tsan "build-tsan/test_fmi2_instances$suffix" 64 8 "$steps"
@@ -109,6 +114,7 @@ memcheck() { # program, arguments...: valgrind's summary printed, any error or l
   grep -E "ERROR SUMMARY|in use at exit|total heap usage" "$log" | sed 's/^==[0-9]*== /    valgrind: /'
 }
 memcheck build/test_kinematics
+memcheck build/abuse_attitude 4 20 "$valgrind_steps" "$valgrind_soak"
 for suffix in "" _EulerRates; do
   memcheck "build/test_fmi2_calls$suffix"
   memcheck "build/test_fmi2_instances$suffix" 1000 4 "$valgrind_steps"

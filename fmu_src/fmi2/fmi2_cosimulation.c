@@ -1,6 +1,8 @@
-/* FMI 2.0 co-simulation stepping and status. The map from inputs to outputs is algebraic, so a
- * step only moves the time and the inputs: held over the step, or moved along the polynomials
- * given by fmi2SetRealInputDerivatives; the outputs at the end are those of the inputs there. */
+/* FMI 2.0 co-simulation stepping and status. A step advances the model's continuous states, if
+ * it has any (ak_model.step, with the inputs and their derivatives at the step start), then
+ * moves the time and the inputs: held over the step, or moved along the polynomials given by
+ * fmi2SetRealInputDerivatives; the outputs at the end are those of the states and inputs there.
+ * For a model without states the map from inputs to outputs is algebraic. */
 #include <math.h>
 #include <string.h>
 
@@ -20,23 +22,34 @@ static bool times_close(double a, double b) {
     return fabs(a - b) <= TIME_RELATIVE_TOLERANCE * scale;
 }
 
-/* A step of a model whose evaluation can fail: the outputs are evaluated at the end of the step.
- * When that fails the step is not taken (fmi2Discard, StepFailed): time, inputs and outputs stay
- * those of the last successful communication point, which fmi2GetRealStatus(
- * fmi2LastSuccessfulTime) reports; fmi2GetBooleanStatus(fmi2Terminated) stays false, so the
- * master may go back with fmi2SetFMUstate or fmi2Reset, or terminate. */
+/* A step of a model with states or whose evaluation can fail: the states are advanced, then the
+ * outputs are evaluated at the end of the step. When either fails the step is not taken
+ * (fmi2Discard, StepFailed): time, states, inputs and outputs stay those of the last successful
+ * communication point, which fmi2GetRealStatus(fmi2LastSuccessfulTime) reports;
+ * fmi2GetBooleanStatus(fmi2Terminated) stays false, so the master may go back with
+ * fmi2SetFMUstate or fmi2Reset, or terminate. */
 static fmi2Status step_evaluating(ak_instance *instance, double t, double h) {
     double saved_values[AK_MAX_VARIABLES];
     double saved_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
-    memcpy(saved_values, instance->data.values, sizeof saved_values);
+    const size_t n_values = sizeof(double) * (size_t)AK_MODEL.n_value_references;
+    memcpy(saved_values, instance->data.values, n_values);
     memcpy(saved_derivatives, instance->data.input_derivatives, sizeof saved_derivatives);
     const bool saved_any = instance->data.any_input_derivative;
-    if (!ak_advance_inputs(instance, h)) {
+    ak_eval_status status = AK_EVAL_OK;
+    if (AK_MODEL.step != NULL) {
+        status = AK_MODEL.step(&instance->data, h); /* failing, it changed nothing */
+        ak_instance_inputs_changed(instance);
+    }
+    const bool step_failed = status == AK_EVAL_FAILED;
+    if (status != AK_EVAL_FAILED && !ak_advance_inputs(instance, h)) {
+        memcpy(instance->data.values, saved_values, n_values); /* the states moved */
         return fmi2Error;
     }
-    const ak_eval_status status = ak_instance_update_outputs(instance);
+    if (status != AK_EVAL_FAILED) {
+        status = ak_instance_update_outputs(instance);
+    }
     if (status == AK_EVAL_FAILED) {
-        memcpy(instance->data.values, saved_values, sizeof saved_values);
+        memcpy(instance->data.values, saved_values, n_values);
         memcpy(instance->data.input_derivatives, saved_derivatives, sizeof saved_derivatives);
         instance->data.any_input_derivative = saved_any;
         /* The outputs are those of the last successful evaluation; a read evaluates again at the
@@ -44,9 +57,12 @@ static fmi2Status step_evaluating(ak_instance *instance, double t, double h) {
         ak_instance_inputs_changed(instance);
         instance->state = AK_STATE_STEP_FAILED;
         ak_log(instance, AK_LOG_WARNING, fmi2Discard,
-               "fmi2DoStep: the step from %.17g to %.17g is discarded: the outputs cannot be "
-               "evaluated at its end; last successful time %.17g",
-               t, t + h, instance->time);
+               "fmi2DoStep: the step from %.17g to %.17g is discarded: the %s; last "
+               "successful time %.17g",
+               t, t + h,
+               step_failed ? "states cannot be advanced over it"
+                                       : "outputs cannot be evaluated at its end",
+               instance->time);
         return fmi2Discard;
     }
     instance->time = t + h;
@@ -92,7 +108,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                t, h, end, instance->stop_time);
         return fmi2Error;
     }
-    if (AK_MODEL.evaluate_in_step) {
+    if (AK_MODEL.evaluate_in_step || AK_MODEL.step != NULL) {
         return step_evaluating(instance, t, h);
     }
     /* Without input derivatives the inputs are held: no call (ak_advance_inputs would return at

@@ -105,6 +105,22 @@ static bool value_reference_is(const ak_instance *instance, ak_function function
     return true;
 }
 
+/* The index of vr in a model's list of states (or of state derivatives), or -1. */
+static int state_index(const unsigned int *vrs, fmi2ValueReference vr) {
+    for (int k = 0; k < AK_MODEL.n_states; k++) {
+        if (vrs[k] == vr) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+/* The column of a known (checked: an input or a state) in the model's Jacobian. */
+static size_t known_column(fmi2ValueReference vr) {
+    const int state = state_index(AK_MODEL.state_vrs, vr);
+    return state >= 0 ? (size_t)(AK_MODEL.n_inputs + state) : (size_t)vr;
+}
+
 /* The refusal of a function behind a capability flag the model does not claim. */
 static fmi2Status not_provided(const ak_instance *instance, ak_function function,
                                const char *flag) {
@@ -213,14 +229,15 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
         return fmi2Error;
     }
     for (size_t i = 0; i < nUnknown; i++) {
-        if (!value_reference_is(instance, self, "vUnknown_ref", i, vUnknown_ref[i],
+        if (state_index(AK_MODEL.derivative_vrs, vUnknown_ref[i]) < 0 &&
+            !value_reference_is(instance, self, "vUnknown_ref", i, vUnknown_ref[i],
                                 AK_CAUSALITY_OUTPUT)) {
             return fmi2Error;
         }
     }
     for (size_t j = 0; j < nKnown; j++) {
-        if (!value_reference_is(instance, self, "vKnown_ref", j, vKnown_ref[j],
-                                AK_CAUSALITY_INPUT)) {
+        if (state_index(AK_MODEL.state_vrs, vKnown_ref[j]) < 0 && !value_reference_is(instance, self, "vKnown_ref", j, vKnown_ref[j],
+                                             AK_CAUSALITY_INPUT)) {
             return fmi2Error;
         }
         if (!isfinite(dvKnown[j])) {
@@ -231,14 +248,14 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
         }
     }
     /* Row by row, at most AK_MAX_VARIABLES rows at a time. */
-    double J[AK_MAX_VARIABLES][AK_MAX_INPUTS];
+    double J[AK_MAX_VARIABLES][AK_MAX_KNOWNS];
     for (size_t first = 0; first < nUnknown; first += AK_MAX_VARIABLES) {
         const size_t n = nUnknown - first < AK_MAX_VARIABLES ? nUnknown - first : AK_MAX_VARIABLES;
         AK_MODEL.jacobian(&instance->data, &vUnknown_ref[first], n, J);
         for (size_t i = 0; i < n; i++) {
             double sum = 0.0;
             for (size_t j = 0; j < nKnown; j++) {
-                sum += J[i][vKnown_ref[j]] * dvKnown[j];
+                sum += J[i][known_column(vKnown_ref[j])] * dvKnown[j];
             }
             dvUnknown[first + i] = sum;
         }

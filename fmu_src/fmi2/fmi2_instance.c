@@ -26,11 +26,23 @@ void ak_instance_reset(ak_instance *instance) {
         const ak_variable *variable = ak_variable_of((unsigned int)vr);
         instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
     }
+    ak_instance_clear_input_derivatives(instance);
+    if (AK_MODEL.initialize != NULL) {
+        (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
+    }
     ak_instance_inputs_changed(instance);
     instance->lazy_stale = true;
     instance->evaluation_status = AK_EVAL_OK;
-    ak_instance_clear_input_derivatives(instance);
     instance->evaluations = 0;
+}
+
+bool ak_is_state(unsigned int vr) {
+    for (int k = 0; k < AK_MODEL.n_states; k++) {
+        if (AK_MODEL.state_vrs[k] == vr) {
+            return true;
+        }
+    }
+    return false;
 }
 
 void ak_instance_clear_input_derivatives(ak_instance *instance) {
@@ -45,6 +57,14 @@ void ak_instance_clear_input_derivatives(ak_instance *instance) {
 ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
     if (!instance->outputs_stale) {
         return instance->evaluation_status;
+    }
+    /* Until fmi2ExitInitializationMode the states follow the parameters they start from. */
+    if (AK_MODEL.initialize != NULL &&
+        (instance->state & (AK_STATE_INSTANTIATED | AK_STATE_INITIALIZATION_MODE)) != 0 &&
+        AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
+        instance->evaluation_status = AK_EVAL_FAILED;
+        instance->outputs_stale = false;
+        return AK_EVAL_FAILED;
     }
     instance->evaluation_status = AK_MODEL.evaluate(&instance->data);
     instance->outputs_stale = false;

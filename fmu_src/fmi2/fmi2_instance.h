@@ -74,6 +74,9 @@ ak_eval_status ak_instance_update_all_outputs(ak_instance *instance);
  * fmi2Warning, or fmi2Discard when it failed (both interfaces; see fmi2_instance.c). */
 fmi2Status ak_instance_read_status(const ak_instance *instance, ak_eval_status status);
 
+/* True when vr is one of the model's continuous states. */
+bool ak_is_state(unsigned int vr);
+
 /* Marks every output stale (an input or parameter changed): the main group directly, the lazy
  * group through it (every evaluation of the main group makes the lazy group stale), so that a
  * setter pays one store. */

@@ -167,6 +167,17 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
     if (!ak_call_allowed(instance, AK_FMI2_EXIT_INITIALIZATION_MODE)) {
         return fmi2Error;
     }
+    /* The states from the parameters: a refusal (logged by the model) leaves the instance in
+     * InitializationMode, so that the master can correct the parameters and call again. */
+    if (AK_MODEL.initialize != NULL) {
+        if (AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
+            ak_log(instance, AK_LOG_ERROR, fmi2Error,
+                   "fmi2ExitInitializationMode: the parameters give no initial state (see the "
+                   "message before); the instance stays in InitializationMode");
+            return fmi2Error;
+        }
+        ak_instance_inputs_changed(instance);
+    }
     /* The outputs at the initial inputs; a failed evaluation is reported by the reads. */
     (void)ak_instance_update_outputs(instance);
     instance->state = instance->fmu_type == fmi2ModelExchange ? AK_STATE_EVENT_MODE

@@ -97,7 +97,8 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         if (variable == NULL) {
             return fmi2Error;
         }
-        if (variable->causality == AK_CAUSALITY_OUTPUT) {
+        if (variable->causality == AK_CAUSALITY_OUTPUT ||
+            variable->causality == AK_CAUSALITY_LOCAL) {
             main = true;
             lazy = lazy || variable->group == AK_GROUP_LAZY;
         }
@@ -126,11 +127,15 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         if (variable == NULL) {
             return fmi2Error;
         }
-        if (variable->causality == AK_CAUSALITY_OUTPUT) {
+        if (variable->causality == AK_CAUSALITY_OUTPUT ||
+            variable->causality == AK_CAUSALITY_LOCAL) {
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
-                   "fmi2SetReal: vr[%zu] = %u is %s, an %s: only inputs and parameters can be "
+                   "fmi2SetReal: vr[%zu] = %u is %s, an %s%s: only inputs and parameters can be "
                    "set; no value set",
-                   i, vr[i], variable->name, ak_causality_name(variable->causality));
+                   i, vr[i], variable->name, ak_causality_name(variable->causality),
+                   ak_is_state(vr[i]) ? " and a continuous state (fmi2SetContinuousStates sets "
+                                        "states in model exchange)"
+                                      : "");
             return fmi2Error;
         }
         if (!isfinite(value[i])) {

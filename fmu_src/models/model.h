@@ -6,9 +6,12 @@
  * Values live in one array indexed by value reference. Value references are the description's
  * and never move; the rules the layers rely on (checked by the generator):
  *   - the inputs hold value references 0 .. n_inputs - 1 (all Real);
- *   - every other value reference is an output (group main or lazy) or a parameter (variability
- *     fixed, Real or Integer), in any order; a value reference no variable has is a hole of the
- *     table (name NULL).
+ *   - every other value reference is an output (group main or lazy), a local (the derivatives of
+ *     continuous states, computed like main outputs) or a parameter (variability fixed, Real or
+ *     Integer), in any order; a value reference no variable has is a hole of the table (name
+ *     NULL);
+ *   - continuous states (model exchange; co-simulation integrates them in `step`) live in the
+ *     value array like every other value, so an FMU state carries them.
  * Integer values are kept as doubles in the same array (every int is exact in a double). */
 #ifndef ANGULAR_KINEMATICS_MODEL_H
 #define ANGULAR_KINEMATICS_MODEL_H
@@ -22,12 +25,20 @@
 #define AK_MAX_VARIABLES 80
 #define AK_MAX_INPUTS 9
 #define AK_MAX_DEPENDENCIES 9
+#define AK_MAX_STATES 4
+/* The knowns of a directional derivative: the inputs, then the continuous states. */
+#define AK_MAX_KNOWNS (AK_MAX_INPUTS + AK_MAX_STATES)
 
 /* Highest order of input derivative a master may give: the inputs follow a polynomial of this
  * degree over a communication step. */
 #define AK_MAX_INPUT_DERIVATIVE_ORDER 2
 
-typedef enum { AK_CAUSALITY_INPUT, AK_CAUSALITY_OUTPUT, AK_CAUSALITY_PARAMETER } ak_causality;
+typedef enum {
+    AK_CAUSALITY_INPUT,
+    AK_CAUSALITY_OUTPUT,
+    AK_CAUSALITY_PARAMETER,
+    AK_CAUSALITY_LOCAL
+} ak_causality;
 typedef enum { AK_TYPE_REAL, AK_TYPE_INTEGER } ak_type;
 /* Outputs of the main group are computed by evaluate whenever an input changed and an output is
  * read; those of the lazy group by evaluate_lazy, only when one of them is read. */
@@ -85,18 +96,37 @@ typedef struct {
 
     /* Optional capabilities: NULL when the model does not have them (the FMI function then
      * refuses with a message naming the modelDescription.xml flag). */
-    /* Exact d output / d input for the listed outputs (value references) and all inputs:
-     * J[i][k] = d y(out[i]) / d u_k. */
+    /* Exact derivatives of the listed unknowns (value references of outputs, or of state
+     * derivatives) with respect to every known: J[i][k] = d y(out[i]) / d u_k for the inputs
+     * k < n_inputs, and J[i][n_inputs + s] = d y(out[i]) / d x_s for the states. */
     void (*jacobian)(const ak_model_data *data, const unsigned int out[], size_t n_out,
-                     double J[][AK_MAX_INPUTS]);
+                     double J[][AK_MAX_KNOWNS]);
     /* First time derivatives of the listed outputs (checked value references of outputs), given
      * the inputs and their derivatives data->input_derivatives. */
     void (*output_derivatives)(ak_model_data *data, const unsigned int vr[], size_t nvr,
                                double value[]);
     bool can_interpolate_inputs;
-    /* True for a model whose evaluation can fail: fmi2DoStep then evaluates at the end of the
+    /* True for a model whose evaluation can fail, or whose outputs depend on the path (the
+     * unwrapped angles of AttitudePropagator): fmi2DoStep then evaluates at the end of the
      * step and returns fmi2Discard (StepFailed) when it fails. */
     bool evaluate_in_step;
+
+    /* Continuous states: 0 / NULL for a model without. The states and their derivatives are
+     * values (value references state_vrs[k], derivative_vrs[k]); state_nominals[k] the nominal
+     * of state k. */
+    int n_states;
+    const unsigned int *state_vrs;
+    const unsigned int *derivative_vrs;
+    const double *state_nominals;
+    /* Writes der(x) at values[derivative_vrs[k]] from the states and inputs in values. */
+    void (*derivatives)(ak_model_data *data);
+    /* Co-simulation: advances the states over h with the inputs and input_derivatives as given
+     * (those at the step start); AK_EVAL_FAILED (logged) leaves them as they were. */
+    ak_eval_status (*step)(ak_model_data *data, double h);
+    /* The states from the parameters: called before each evaluation until
+     * fmi2ExitInitializationMode, and there; AK_EVAL_FAILED (logged) when the parameters give
+     * no valid start, which leaves the states as they were. */
+    ak_eval_status (*initialize)(ak_model_data *data);
 } ak_model;
 
 /* The model this binary is built for (one model folder per FMU target). */
@@ -121,6 +151,7 @@ static inline const ak_variable *ak_variable_of(unsigned int vr) {
 static inline const char *ak_causality_name(ak_causality causality) {
     return causality == AK_CAUSALITY_INPUT    ? "input"
            : causality == AK_CAUSALITY_OUTPUT ? "output"
+           : causality == AK_CAUSALITY_LOCAL  ? "local"
                                               : "parameter";
 }
 

@@ -14,10 +14,12 @@ import numpy as np
 from fmpy import extract, read_model_description
 from fmpy.fmi3 import FMU3Model, FMU3Slave
 
+from codegen import project
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 STATUS = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal"}
 OK, WARNING, DISCARD, ERROR = 0, 1, 2, 3
-MODELS = ["AngularKinematics", "EulerRates"]
+MODELS = project.FMI3_MODELS
 _unzipped = {}
 
 

@@ -56,7 +56,7 @@ static const char *check_parameter(const ak_variable *variable, double value) {
 }
 
 static void jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,
-                     double J[][AK_MAX_INPUTS]) {
+                     double J[][AK_MAX_KNOWNS]) {
     const double *v = data->values;
     double full[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS];
     ak_general_jacobian(sequence_of(data), &v[AK_VR_THETA], &v[AK_VR_THETA_DOT],

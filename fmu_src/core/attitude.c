@@ -1,0 +1,308 @@
+/* Attitude on unit quaternions: the equations are stated in attitude.h. */
+#include "attitude.h"
+
+#include <math.h>
+#include <stddef.h>
+
+static const double PI = 3.14159265358979323846;
+static const double TWO_PI = 6.28318530717958647692;
+
+void ak_quat_multiply(const double a[4], const double b[4], double out[4]) {
+    out[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+    out[1] = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+    out[2] = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+    out[3] = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+}
+
+void ak_quat_exp(const double v[3], double out[4]) {
+    const double angle = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    double sinc; /* sin(angle) / angle */
+    if (angle < 1e-4) {
+        const double a2 = angle * angle;
+        sinc = 1.0 - a2 / 6.0 * (1.0 - a2 / 20.0);
+    } else {
+        sinc = sin(angle) / angle;
+    }
+    out[0] = cos(angle);
+    out[1] = sinc * v[0];
+    out[2] = sinc * v[1];
+    out[3] = sinc * v[2];
+}
+
+void ak_quat_to_matrix(const double q[4], double R[3][3]) {
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    R[0][0] = 1.0 - 2.0 * (y * y + z * z);
+    R[0][1] = 2.0 * (x * y - w * z);
+    R[0][2] = 2.0 * (x * z + w * y);
+    R[1][0] = 2.0 * (x * y + w * z);
+    R[1][1] = 1.0 - 2.0 * (x * x + z * z);
+    R[1][2] = 2.0 * (y * z - w * x);
+    R[2][0] = 2.0 * (x * z - w * y);
+    R[2][1] = 2.0 * (y * z + w * x);
+    R[2][2] = 1.0 - 2.0 * (x * x + y * y);
+}
+
+void ak_attitude_input_polynomial(const double w0[3], const double w1[3], const double w2[3],
+                                  const double *wp, const double *wdp, double hp,
+                                  double c[4][3]) {
+    for (int k = 0; k < 3; k++) {
+        c[0][k] = w0[k];
+        c[1][k] = w1[k];
+        c[2][k] = 0.5 * w2[k];
+        c[3][k] = 0.0;
+        if (wp == NULL) {
+            continue;
+        }
+        const double slope_gap = wdp[k] - w1[k];
+        if (w2[k] != 0.0) { /* c2 given: the cubic term matches the slope at -hp */
+            c[3][k] = (slope_gap + 2.0 * c[2][k] * hp) / (3.0 * hp * hp);
+        } else {
+            const double value_gap = wp[k] - w0[k] + w1[k] * hp;
+            c[3][k] = (slope_gap + 2.0 * value_gap / hp) / (hp * hp);
+            c[2][k] = value_gap / (hp * hp) + c[3][k] * hp;
+        }
+    }
+}
+
+void ak_attitude_step_vector(ak_frame frame, double c[4][3], double h, double omega_vector[3]) {
+    /* Gauss points s = h (1/2 -+ sqrt(3)/6) of the polynomial omega(s) (attitude.h, section 4). */
+    const double r = 0.28867513459481288225; /* sqrt(3) / 6 */
+    const double s[2] = {h * (0.5 - r), h * (0.5 + r)};
+    double a[2][3];
+    for (int g = 0; g < 2; g++) {
+        for (int k = 0; k < 3; k++) {
+            a[g][k] = c[0][k] + s[g] * (c[1][k] + s[g] * (c[2][k] + s[g] * c[3][k]));
+        }
+    }
+    const double cross[3] = {a[0][1] * a[1][2] - a[0][2] * a[1][1],
+                             a[0][2] * a[1][0] - a[0][0] * a[1][2],
+                             a[0][0] * a[1][1] - a[0][1] * a[1][0]};
+    /* +sqrt(3)/24 for q (x) A (body), - for A (x) q (fixed). */
+    const double commutator = (frame == AK_FRAME_BODY ? 1.0 : -1.0) * 0.07216878364870322056 * h * h;
+    for (int k = 0; k < 3; k++) {
+        omega_vector[k] = 0.25 * h * (a[0][k] + a[1][k]) + commutator * cross[k];
+    }
+}
+
+void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
+                             const double new_vector[3], double q[4]) {
+    const double back[3] = {-old_vector[0], -old_vector[1], -old_vector[2]};
+    double undo[4], redo[4], change[4], next[4];
+    ak_quat_exp(back, undo);
+    ak_quat_exp(new_vector, redo);
+    if (frame == AK_FRAME_BODY) {
+        ak_quat_multiply(undo, redo, change);
+        ak_quat_multiply(q, change, next);
+    } else {
+        ak_quat_multiply(redo, undo, change);
+        ak_quat_multiply(change, q, next);
+    }
+    for (int k = 0; k < 4; k++) {
+        q[k] = next[k];
+    }
+}
+
+bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction) {
+    double v[3], e[4], next[4];
+    ak_attitude_step_vector(frame, c, h, v);
+    ak_quat_exp(v, e);
+    if (frame == AK_FRAME_BODY) {
+        ak_quat_multiply(q, e, next);
+    } else {
+        ak_quat_multiply(e, q, next);
+    }
+    /* Remove the rounding of the product from the norm (attitude.h, section 4). */
+    const double n2 = next[0] * next[0] + next[1] * next[1] + next[2] * next[2] + next[3] * next[3];
+    const double factor = 0.5 * (3.0 - n2);
+    double moved = 0.0;
+    for (int k = 0; k < 4; k++) {
+        const double corrected = next[k] * factor;
+        moved += (corrected - next[k]) * (corrected - next[k]);
+        next[k] = corrected;
+    }
+    for (int k = 0; k < 4; k++) {
+        if (!isfinite(next[k])) {
+            return false;
+        }
+    }
+    for (int k = 0; k < 4; k++) {
+        q[k] = next[k];
+    }
+    if (correction != NULL) {
+        *correction = sqrt(moved);
+    }
+    return true;
+}
+
+/* Axes of the chain (0-based) and the parity e of section 5. */
+typedef struct {
+    int i, j, k;
+    double e;
+    bool proper;
+} chain_axes;
+
+static chain_axes axes_of(const ak_sequence *sequence) {
+    chain_axes c;
+    const bool space = sequence->kind == AK_SPACE_FIXED;
+    c.i = sequence->axes[space ? 2 : 0] - 1;
+    c.j = sequence->axes[1] - 1;
+    c.k = 3 - c.i - c.j;
+    c.e = (c.j == (c.i + 1) % 3) ? 1.0 : -1.0;
+    c.proper = sequence->proper_euler != 0;
+    return c;
+}
+
+/* The principal chain angles (section 5) and the distance. */
+static void principal(const chain_axes *c, double R[3][3], double phi[3], double *distance) {
+    const int i = c->i, j = c->j, k = c->k;
+    const double e = c->e;
+    if (c->proper) {
+        *distance = sqrt(R[i][j] * R[i][j] + R[i][k] * R[i][k]);
+        phi[1] = atan2(*distance, R[i][i]);
+        phi[0] = atan2(R[j][i], -e * R[k][i]);
+        phi[2] = atan2(R[i][j], e * R[i][k]);
+    } else {
+        *distance = sqrt(R[i][i] * R[i][i] + R[i][j] * R[i][j]);
+        phi[1] = atan2(e * R[i][k], *distance);
+        phi[0] = atan2(-e * R[j][k], R[k][k]);
+        phi[2] = atan2(-e * R[i][j], R[i][i]);
+    }
+}
+
+/* The angle x of R_a(x) from its row (or column) `line` != a of a matrix M that has the factor
+ * R_a(x) on its right (row) or left (column); see attitude.h, section 6. */
+static double angle_from_row(int a, int line, double M[3][3]) {
+    const int next = (a + 1) % 3, after = (a + 2) % 3;
+    return line == next ? atan2(-M[line][after], M[line][line]) : atan2(M[line][next], M[line][line]);
+}
+
+static double angle_from_column(int a, int line, double M[3][3]) {
+    const int next = (a + 1) % 3, after = (a + 2) % 3;
+    return line == next ? atan2(M[after][line], M[line][line]) : atan2(-M[next][line], M[line][line]);
+}
+
+/* The elementary rotation matrix R_a(x). */
+static void elementary(int a, double x, double E[3][3]) {
+    const int next = (a + 1) % 3, after = (a + 2) % 3;
+    const double s = sin(x), co = cos(x);
+    for (int r = 0; r < 3; r++) {
+        for (int col = 0; col < 3; col++) {
+            E[r][col] = r == col ? 1.0 : 0.0;
+        }
+    }
+    E[next][next] = co;
+    E[next][after] = -s;
+    E[after][next] = s;
+    E[after][after] = co;
+}
+
+/* x + 2 pi n nearest to reference. */
+static double unwrap(double x, double reference) {
+    return x + TWO_PI * nearbyint((reference - x) / TWO_PI);
+}
+
+/* theta_k of chain angle m (sequences.h): reversed for space-fixed sequences. */
+static int theta_index(const ak_sequence *sequence, int m) {
+    return sequence->kind == AK_SPACE_FIXED ? 2 - m : m;
+}
+
+static double squared_distance(const double a[3], const double b[3]) {
+    double sum = 0.0;
+    for (int k = 0; k < 3; k++) {
+        sum += (a[k] - b[k]) * (a[k] - b[k]);
+    }
+    return sum;
+}
+
+/* The singular choice (section 6): theta1 held at previous[0], theta3 from the rest. */
+static void singular_angles(const ak_sequence *sequence, const chain_axes *c, double R[3][3],
+                            const double phi_principal[3], const double previous[3],
+                            double theta[3]) {
+    const bool space = sequence->kind == AK_SPACE_FIXED;
+    const int a1 = c->i, a2 = c->j, a3 = c->proper ? c->i : c->k;
+    double E[3][3], M[3][3];
+    const double held = previous[0];
+    if (!space) { /* phi1 = theta1 held: M = R_a1(phi1)^T R = R_a2 R_a3 */
+        elementary(a1, held, E);
+        for (int r = 0; r < 3; r++) {
+            for (int col = 0; col < 3; col++) {
+                M[r][col] = E[0][r] * R[0][col] + E[1][r] * R[1][col] + E[2][r] * R[2][col];
+            }
+        }
+        theta[2] = angle_from_row(a3, a2, M);
+    } else { /* phi3 = theta1 held: M = R R_a3(phi3)^T = R_a1 R_a2 */
+        elementary(a3, held, E);
+        for (int r = 0; r < 3; r++) {
+            for (int col = 0; col < 3; col++) {
+                M[r][col] = R[r][0] * E[col][0] + R[r][1] * E[col][1] + R[r][2] * E[col][2];
+            }
+        }
+        theta[2] = angle_from_column(a1, a2, M);
+    }
+    theta[0] = held;
+    theta[1] = unwrap(phi_principal[1], previous[1]);
+    /* theta2 at the singularity is +-pi/2 or 0/pi; the other set's theta2 (pi - x or -x) is the
+     * same angle there up to 2 pi, so only theta2's unwrapping matters. */
+    theta[2] = unwrap(theta[2], previous[2]);
+}
+
+bool ak_attitude_angles(const ak_sequence *sequence, double R[3][3],
+                        const double previous[3], double theta[3], double *distance) {
+    const chain_axes c = axes_of(sequence);
+    double phi[3];
+    principal(&c, R, phi, distance);
+    if (previous != NULL && *distance < AK_ATTITUDE_SINGULAR_DISTANCE) {
+        singular_angles(sequence, &c, R, phi, previous, theta);
+        return true;
+    }
+    double sets[2][3];
+    for (int m = 0; m < 3; m++) {
+        sets[0][theta_index(sequence, m)] = phi[m];
+    }
+    if (previous == NULL) {
+        for (int k = 0; k < 3; k++) {
+            theta[k] = sets[0][k];
+        }
+        return false;
+    }
+    const double other_middle = c.proper ? -phi[1] : PI - phi[1];
+    sets[1][0] = sets[0][0] + PI;
+    sets[1][1] = other_middle;
+    sets[1][2] = sets[0][2] + PI;
+    for (int s = 0; s < 2; s++) {
+        for (int k = 0; k < 3; k++) {
+            sets[s][k] = unwrap(sets[s][k], previous[k]);
+        }
+    }
+    const int best = squared_distance(sets[1], previous) < squared_distance(sets[0], previous);
+    for (int k = 0; k < 3; k++) {
+        theta[k] = sets[best][k];
+    }
+    return false;
+}
+
+void ak_attitude_angle_rates(const ak_sequence *sequence, ak_frame frame, const double theta[3],
+                             bool singular, const double omega[3], double theta_dot[3]) {
+    if (!singular) {
+        const double zero[3] = {0.0, 0.0, 0.0};
+        double theta_ddot[3], alpha_fixed[3], alpha_body[3], distance;
+        const ak_rates_status status =
+            ak_general_euler_rates(sequence, frame, theta, omega, zero, 0.0, theta_dot,
+                                   theta_ddot, alpha_fixed, alpha_body, &distance);
+        if (status == AK_RATES_OK || status == AK_RATES_NEAR_SINGULAR) {
+            return;
+        }
+        /* Singular to rounding or overflowing: the singular choice keeps the rates finite. */
+    }
+    const double rates[3] = {0.0, 0.0, 0.0};
+    double W_fixed[3][3], W_body[3][3], Wd_fixed[3][3], Wd_body[3][3];
+    ak_general_partials(sequence, theta, rates, W_fixed, W_body, Wd_fixed, Wd_body);
+    double (*W)[3] = frame == AK_FRAME_BODY ? W_body : W_fixed;
+    double rest[3];
+    theta_dot[0] = 0.0;
+    theta_dot[1] = W[0][1] * omega[0] + W[1][1] * omega[1] + W[2][1] * omega[2];
+    for (int r = 0; r < 3; r++) {
+        rest[r] = omega[r] - theta_dot[1] * W[r][1];
+    }
+    theta_dot[2] = W[0][2] * rest[0] + W[1][2] * rest[1] + W[2][2] * rest[2];
+}
