@@ -6,7 +6,8 @@
  *   - the bare core, ak_general_angular_kinematics for body123 (the FMU's default sequence),
  *     linked from the same static library (same compiler, same flags) that the FMU is built from;
  *   - the full cycle of one communication point: fmi2SetReal of the 9 inputs, fmi2DoStep,
- *     fmi2GetReal of the 12 outputs;
+ *     fmi2GetReal of the 12 outputs; the same cycle getting all 61 outputs (what fmpy's
+ *     simulate_fmu records by default), and getting R[1,1] alone (one output of the lazy group);
  *   - fmi2GetReal of the 12 outputs when no input changed (the FMU must not recompute), in
  *     value-reference order and reversed; fmi2SetReal of the 9 inputs alone; fmi2DoStep alone;
  *   - fmi2SetReal of one input to a new value followed by fmi2GetReal of the 12 outputs, for
@@ -46,6 +47,10 @@ static const fmi2ValueReference OUTPUT_VRS[N_OUTPUTS] = {9,  10, 11, 12, 13, 14,
 /* The same outputs in another order: a master need not ask in value-reference order. */
 static const fmi2ValueReference OUTPUT_VRS_REVERSED[N_OUTPUTS] = {20, 19, 18, 17, 16, 15,
                                                                   14, 13, 12, 11, 10, 9};
+/* Every output (what fmpy's simulate_fmu records by default), filled in by main; and one output
+ * of the lazy group, R[1,1], which makes the FMU compute the whole lazy group. */
+static fmi2ValueReference ALL_OUTPUT_VRS[AK_N_OUTPUTS];
+static const fmi2ValueReference ONE_LAZY_VR[1] = {AK_VR_R};
 static const double STEP_SIZE = 1e-3;
 
 /* ---- the FMU, loaded as a master loads it ------------------------------------------------------ */
@@ -260,12 +265,13 @@ static double time_core(long n) {
     return elapsed / (double)n;
 }
 
-/* n communication points on a fresh instance: ns per set/doStep/get cycle. */
-static double time_cycle(fmu_api *api, long n) {
+/* n communication points on a fresh instance, getting the n_vrs outputs `vrs`: ns per
+set/doStep/get cycle. */
+static double time_cycle(fmu_api *api, const fmi2ValueReference *vrs, int n_vrs, long n) {
     instance fmu;
     start_instance(api, &fmu);
     const unsigned long evaluations_before = evaluations(&fmu);
-    double outputs[N_OUTPUTS];
+    double outputs[AK_N_OUTPUTS];
     double sum = 0.0, t = fmu.time;
     int k = 0;
     unsigned int statuses = fmi2OK;
@@ -275,9 +281,9 @@ static double time_cycle(fmu_api *api, long n) {
         statuses |= (unsigned int)api->set_real(fmu.component, INPUT_VRS, N_INPUTS, u);
         statuses |= (unsigned int)api->do_step(fmu.component, t, STEP_SIZE, fmi2True);
         t += STEP_SIZE;
-        statuses |= (unsigned int)api->get_real(fmu.component, OUTPUT_VRS, N_OUTPUTS, outputs);
+        statuses |= (unsigned int)api->get_real(fmu.component, vrs, (size_t)n_vrs, outputs);
         sum += outputs[k];
-        k = k == N_OUTPUTS - 1 ? 0 : k + 1;
+        k = k >= n_vrs - 1 ? 0 : k + 1;
     }
     const double elapsed = now_ns() - start;
     sink = sum;
@@ -419,13 +425,13 @@ typedef struct {
     int n_sizes;
     int repeats;
     long calls;
-    const char *only; /* "core", "cycle" or "get": one loop of sizes[0], for callgrind */
+    const char *only; /* "core", "cycle", "all", "lazy" or "get": one loop of sizes[0] */
 } options;
 
 static void usage(void) {
     fprintf(stderr,
             "usage: bench_fmu FMU_SO [--steps N[,N...]] [--repeats R] [--calls N]\n"
-            "                        [--only core|cycle|get --steps N]\n"
+            "                        [--only core|cycle|all|lazy|get --steps N]\n"
             "  FMU_SO     the AngularKinematics.so of a Release build\n"
             "  --steps    step counts of the cycle-vs-core runs (default 1e3,1e4,1e5,1e6,1e7)\n"
             "  --repeats  repeats per figure, median quoted (default 5)\n"
@@ -487,12 +493,15 @@ static const char *const INPUT_NAMES[N_INPUTS] = {
     "theta_dot[3]", "theta_ddot[1]", "theta_ddot[2]", "theta_ddot[3]"};
 
 static void run_scaling(fmu_api *api, const options *o) {
-    printf("Full cycle (fmi2SetReal of 9 inputs, fmi2DoStep, fmi2GetReal of 12 outputs) vs. the\n"
-           "bare core ak_general_angular_kinematics (body123), timed alternately in this run; medians of the\n"
-           "repeats, cycle / core is the median of the per-repeat ratios:\n\n");
+    printf("Full cycles: fmi2SetReal of 9 inputs, fmi2DoStep, then fmi2GetReal of the 12 omega/alpha\n"
+           "outputs (cycle), of all 61 outputs (all 61), or of R[1,1] alone (one lazy output).\n"
+           "Each is compared with the same bare core, ak_general_angular_kinematics for body123 (the\n"
+           "12 omega/alpha outputs); the four loops run alternately in each repeat; ns are medians of\n"
+           "the repeats, each ratio the median of the per-repeat ratios:\n\n");
     printf("| steps per run | repeats | core ns/step | cycle ns/step | cycle / core | "
+           "all 61 ns | all 61 / core | one lazy ns | one lazy / core | "
            "max RSS KiB | FMU allocations per run |\n");
-    printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+    printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int s = 0; s < o->n_sizes; s++) {
         const long n = o->sizes[s];
         /* Short runs are repeated more, so that every row rests on at least 1e6 steps. */
@@ -501,19 +510,26 @@ static void run_scaling(fmu_api *api, const options *o) {
             repeats += 2;
         }
         double core[MAX_REPEATS], cycle[MAX_REPEATS], ratios[MAX_REPEATS];
+        double all[MAX_REPEATS], all_ratios[MAX_REPEATS], lazy[MAX_REPEATS];
+        double lazy_ratios[MAX_REPEATS];
         unsigned long allocations_per_run = 0;
         time_core(n < 1000 ? n : 1000); /* warm-up */
         for (int r = 0; r < repeats; r++) {
-            /* Interleaved, so that a slow moment of the shared machine hits both alike. */
+            /* Interleaved, so that a slow moment of the shared machine hits all alike. */
             core[r] = time_core(n);
             const unsigned long before = allocations;
-            cycle[r] = time_cycle(api, n);
+            cycle[r] = time_cycle(api, OUTPUT_VRS, N_OUTPUTS, n);
             allocations_per_run = allocations - before;
+            all[r] = time_cycle(api, ALL_OUTPUT_VRS, AK_N_OUTPUTS, n);
+            lazy[r] = time_cycle(api, ONE_LAZY_VR, 1, n);
             ratios[r] = cycle[r] / core[r];
+            all_ratios[r] = all[r] / core[r];
+            lazy_ratios[r] = lazy[r] / core[r];
         }
-        printf("| %ld | %d | %.1f | %.1f | %.2f | %ld | %lu |\n", n, repeats,
-               median(core, repeats), median(cycle, repeats), median(ratios, repeats),
-               max_rss_kib(), allocations_per_run);
+        printf("| %ld | %d | %.1f | %.1f | %.2f | %.1f | %.2f | %.1f | %.2f | %ld | %lu |\n", n,
+               repeats, median(core, repeats), median(cycle, repeats), median(ratios, repeats),
+               median(all, repeats), median(all_ratios, repeats), median(lazy, repeats),
+               median(lazy_ratios, repeats), max_rss_kib(), allocations_per_run);
         fflush(stdout);
     }
 }
@@ -572,13 +588,20 @@ int main(int argc, char **argv) {
         return 1;
     }
     fill_input_table();
+    for (int k = 0; k < AK_N_OUTPUTS; k++) {
+        ALL_OUTPUT_VRS[k] = (fmi2ValueReference)(AK_VR_OMEGA_FIXED + k);
+    }
     check_fmu(&api);
 
     if (o.only != NULL) {
         if (strcmp(o.only, "core") == 0) {
             time_core(o.sizes[0]);
         } else if (strcmp(o.only, "cycle") == 0) {
-            time_cycle(&api, o.sizes[0]);
+            time_cycle(&api, OUTPUT_VRS, N_OUTPUTS, o.sizes[0]);
+        } else if (strcmp(o.only, "all") == 0) {
+            time_cycle(&api, ALL_OUTPUT_VRS, AK_N_OUTPUTS, o.sizes[0]);
+        } else if (strcmp(o.only, "lazy") == 0) {
+            time_cycle(&api, ONE_LAZY_VR, 1, o.sizes[0]);
         } else if (strcmp(o.only, "get") == 0) {
             time_get_unchanged(&api, OUTPUT_VRS, o.sizes[0]);
         } else {

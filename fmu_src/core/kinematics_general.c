@@ -13,13 +13,34 @@ typedef struct {
     int angle[3];   /* index k of the theta_k that is chain angle m */
 } chain;
 
-static void make_chain(const ak_sequence *sequence, const double theta[3], chain *ch) {
+static inline void chain_of_sines(const ak_sequence *sequence, const ak_sines *sines, chain *ch) {
     for (int m = 0; m < 3; m++) {
         const int k = (sequence->kind == AK_SPACE_FIXED) ? 2 - m : m;
         ch->axis[m] = sequence->axes[k] - 1;
         ch->angle[m] = k;
-        ch->s[m] = sin(theta[k]);
-        ch->c[m] = cos(theta[k]);
+        ch->s[m] = sines->sin[k];
+        ch->c[m] = sines->cos[k];
+    }
+}
+
+static void make_chain(const ak_sequence *sequence, const double theta[3], chain *ch) {
+    ak_sines sines;
+    ak_angle_sines(theta, &sines);
+    chain_of_sines(sequence, &sines, ch);
+}
+
+void ak_angle_sines(const double theta[3], ak_sines *sines) {
+    for (int k = 0; k < 3; k++) {
+        sines->sin[k] = sin(theta[k]);
+        sines->cos[k] = cos(theta[k]);
+    }
+}
+
+void ak_half_angle_sines(const double theta[3], ak_sines *half) {
+    for (int k = 0; k < 3; k++) {
+        const double x = 0.5 * theta[k];
+        half->sin[k] = sin(x);
+        half->cos[k] = cos(x);
     }
 }
 
@@ -28,7 +49,7 @@ static const int NEXT[3] = {1, 2, 0};
 static const int AFTER_NEXT[3] = {2, 0, 1};
 
 /* v := R_axis(x) v, with s = sin x, c = cos x. */
-static void rotate(int axis, double s, double c, double v[3]) {
+static inline void rotate(int axis, double s, double c, double v[3]) {
     const int i = NEXT[axis], j = AFTER_NEXT[axis];
     const double vi = v[i], vj = v[j];
     v[i] = c * vi - s * vj;
@@ -36,11 +57,11 @@ static void rotate(int axis, double s, double c, double v[3]) {
 }
 
 /* v := R_axis(x)^T v. */
-static void rotate_back(int axis, double s, double c, double v[3]) {
+static inline void rotate_back(int axis, double s, double c, double v[3]) {
     rotate(axis, -s, c, v);
 }
 
-static void unit(int axis, double v[3]) {
+static inline void unit(int axis, double v[3]) {
     v[0] = v[1] = v[2] = 0.0;
     v[axis] = 1.0;
 }
@@ -48,7 +69,7 @@ static void unit(int axis, double v[3]) {
 /* out := e_axis x x: only moves and negates components. All three are zeroed first (out[axis]
  * stays 0) so that gcc -fanalyzer (scripts/check_static.sh) sees every component written; it cannot
  * tell that axis, i and j are 0, 1, 2 in some order. */
-static void axis_cross(int axis, const double x[3], double out[3]) {
+static inline void axis_cross(int axis, const double x[3], double out[3]) {
     const int i = NEXT[axis], j = AFTER_NEXT[axis];
     out[0] = out[1] = out[2] = 0.0;
     out[i] = -x[j];
@@ -56,7 +77,7 @@ static void axis_cross(int axis, const double x[3], double out[3]) {
 }
 
 /* Chain axes in fixed (u) and body (v) components, u[m], v[m] for chain rotation m. */
-static void chain_axes(const chain *ch, double u[3][3], double v[3][3]) {
+static inline void chain_axes(const chain *ch, double u[3][3], double v[3][3]) {
     for (int m = 0; m < 3; m++) {
         unit(ch->axis[m], u[m]);
         for (int l = m - 1; l >= 0; l--) {
@@ -70,14 +91,14 @@ static void chain_axes(const chain *ch, double u[3][3], double v[3][3]) {
 }
 
 /* v := R_a(phi_m) v for the chain rotations first..last, applied innermost (last) first. */
-static void rotate_chain(const chain *ch, int first, int last, double v[3]) {
+static inline void rotate_chain(const chain *ch, int first, int last, double v[3]) {
     for (int m = last; m >= first; m--) {
         rotate(ch->axis[m], ch->s[m], ch->c[m], v);
     }
 }
 
 /* v := (R_a(phi_first) .. R_a(phi_last))^T v. */
-static void rotate_chain_back(const chain *ch, int first, int last, double v[3]) {
+static inline void rotate_chain_back(const chain *ch, int first, int last, double v[3]) {
     for (int m = first; m <= last; m++) {
         rotate_back(ch->axis[m], ch->s[m], ch->c[m], v);
     }
@@ -95,7 +116,7 @@ typedef struct {
     double v12[3], v13[3], v23[3];   /* v_l x v_m, body components */
 } cross_products;
 
-static void chain_cross_products(const chain *ch, cross_products *x) {
+static inline void chain_cross_products(const chain *ch, cross_products *x) {
     const int a1 = ch->axis[0], a2 = ch->axis[1], a3 = ch->axis[2];
     double w[3];
     unit(a2, w);
@@ -124,7 +145,7 @@ static void chain_cross_products(const chain *ch, cross_products *x) {
     rotate_chain_back(ch, 2, 2, x->v23);
 }
 
-static void chain_axis_rates(const chain *ch, const double phi_dot[3], double du[3][3],
+static inline void chain_axis_rates(const chain *ch, const double phi_dot[3], double du[3][3],
                              double dv[3][3]) {
     cross_products x;
     chain_cross_products(ch, &x);
@@ -138,19 +159,20 @@ static void chain_axis_rates(const chain *ch, const double phi_dot[3], double du
     }
 }
 
-static void to_chain_order(const chain *ch, const double x[3], double out[3]) {
+static inline void to_chain_order(const chain *ch, const double x[3], double out[3]) {
     for (int m = 0; m < 3; m++) {
         out[m] = x[ch->angle[m]];
     }
 }
 
-void ak_general_angular_kinematics(const ak_sequence *sequence, const double theta[3],
-                                   const double theta_dot[3], const double theta_ddot[3],
-                                   double omega_fixed[3], double omega_body[3],
-                                   double alpha_fixed[3], double alpha_body[3]) {
+/* Omega and alpha (header, sections 2, 3); body123_kinematics copies it for constant axes. */
+static inline void chain_kinematics(const ak_sequence *sequence, const ak_sines *sines,
+                                    const double theta_dot[3], const double theta_ddot[3],
+                                    double omega_fixed[3], double omega_body[3],
+                                    double alpha_fixed[3], double alpha_body[3]) {
     chain ch;
     double u[3][3], v[3][3], du[3][3], dv[3][3], pd[3], pdd[3];
-    make_chain(sequence, theta, &ch);
+    chain_of_sines(sequence, sines, &ch);
     chain_axes(&ch, u, v);
     to_chain_order(&ch, theta_dot, pd);
     to_chain_order(&ch, theta_ddot, pdd);
@@ -165,14 +187,50 @@ void ak_general_angular_kinematics(const ak_sequence *sequence, const double the
     }
 }
 
-void ak_general_rotation_matrix(const ak_sequence *sequence, const double theta[3], double R[3][3]) {
-    chain ch;
-    make_chain(sequence, theta, &ch);
+/* chain_kinematics for body123 with every helper inlined, so that the compiler folds the
+ * constant axes: the same arithmetic in the same order, hence the same bits. */
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
+static void body123_kinematics(const ak_sines *sines, const double theta_dot[3],
+                               const double theta_ddot[3], double omega_fixed[3],
+                               double omega_body[3], double alpha_fixed[3], double alpha_body[3]) {
+    chain_kinematics(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], sines, theta_dot, theta_ddot,
+                     omega_fixed, omega_body, alpha_fixed, alpha_body);
+}
+
+void ak_general_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
+                                            const double theta_dot[3], const double theta_ddot[3],
+                                            double omega_fixed[3], double omega_body[3],
+                                            double alpha_fixed[3], double alpha_body[3]) {
+    /* The default sequence, the one most users run, through its own specialized copy: same
+     * arithmetic, with the axes known to the compiler (docs/performance.md: cycle / core 2.00
+     * against 2.17 without it). */
+    if (sequence == &AK_SEQUENCES[AK_SEQUENCE_DEFAULT]) {
+        body123_kinematics(sines, theta_dot, theta_ddot, omega_fixed, omega_body, alpha_fixed,
+                           alpha_body);
+    } else {
+        chain_kinematics(sequence, sines, theta_dot, theta_ddot, omega_fixed, omega_body,
+                         alpha_fixed, alpha_body);
+    }
+}
+
+void ak_general_angular_kinematics(const ak_sequence *sequence, const double theta[3],
+                                   const double theta_dot[3], const double theta_ddot[3],
+                                   double omega_fixed[3], double omega_body[3],
+                                   double alpha_fixed[3], double alpha_body[3]) {
+    ak_sines sines;
+    ak_angle_sines(theta, &sines);
+    ak_general_angular_kinematics_of_sines(sequence, &sines, theta_dot, theta_ddot, omega_fixed,
+                                           omega_body, alpha_fixed, alpha_body);
+}
+
+static inline void chain_rotation_matrix(const chain *ch, double R[3][3]) {
     for (int col = 0; col < 3; col++) {
         double e[3];
         unit(col, e);
         for (int m = 2; m >= 0; m--) {
-            rotate(ch.axis[m], ch.s[m], ch.c[m], e);
+            rotate(ch->axis[m], ch->s[m], ch->c[m], e);
         }
         for (int r = 0; r < 3; r++) {
             R[r][col] = e[r];
@@ -180,14 +238,19 @@ void ak_general_rotation_matrix(const ak_sequence *sequence, const double theta[
     }
 }
 
-void ak_general_quaternion(const ak_sequence *sequence, const double theta[3], double q[4]) {
+void ak_general_rotation_matrix(const ak_sequence *sequence, const double theta[3], double R[3][3]) {
     chain ch;
     make_chain(sequence, theta, &ch);
+    chain_rotation_matrix(&ch, R);
+}
+
+/* q from the chain's axes and the sines of the half angles (header, section 5). */
+static inline void chain_quaternion(const chain *ch, const ak_sines *half, double q[4]) {
     double p[4] = {1.0, 0.0, 0.0, 0.0};
     for (int m = 0; m < 3; m++) {
-        const double half = 0.5 * theta[ch.angle[m]];
-        double e[4] = {cos(half), 0.0, 0.0, 0.0};
-        e[1 + ch.axis[m]] = sin(half);
+        const int k = ch->angle[m];
+        double e[4] = {half->cos[k], 0.0, 0.0, 0.0};
+        e[1 + ch->axis[m]] = half->sin[k];
         /* p := p e, Hamilton product, scalar first. */
         const double r0 = p[0] * e[0] - p[1] * e[1] - p[2] * e[2] - p[3] * e[3];
         const double r1 = p[0] * e[1] + p[1] * e[0] + p[2] * e[3] - p[3] * e[2];
@@ -209,23 +272,67 @@ void ak_general_quaternion(const ak_sequence *sequence, const double theta[3], d
     }
 }
 
-void ak_general_partials(const ak_sequence *sequence, const double theta[3],
-                         const double theta_dot[3], double W_fixed[3][3], double W_body[3][3],
-                         double W_fixed_dot[3][3], double W_body_dot[3][3]) {
+void ak_general_quaternion(const ak_sequence *sequence, const double theta[3], double q[4]) {
     chain ch;
-    double u[3][3], v[3][3], du[3][3], dv[3][3], pd[3];
+    ak_sines half;
     make_chain(sequence, theta, &ch);
-    chain_axes(&ch, u, v);
-    to_chain_order(&ch, theta_dot, pd);
-    chain_axis_rates(&ch, pd, du, dv);
+    ak_half_angle_sines(theta, &half);
+    chain_quaternion(&ch, &half, q);
+}
+
+static inline void chain_partials(const chain *ch, const double theta_dot[3], double W_fixed[3][3],
+                           double W_body[3][3], double W_fixed_dot[3][3],
+                           double W_body_dot[3][3]) {
+    double u[3][3], v[3][3], du[3][3], dv[3][3], pd[3];
+    chain_axes(ch, u, v);
+    to_chain_order(ch, theta_dot, pd);
+    chain_axis_rates(ch, pd, du, dv);
     for (int m = 0; m < 3; m++) {
-        const int col = ch.angle[m];
+        const int col = ch->angle[m];
         for (int r = 0; r < 3; r++) {
             W_fixed[r][col] = u[m][r];
             W_body[r][col] = v[m][r];
             W_fixed_dot[r][col] = du[m][r];
             W_body_dot[r][col] = dv[m][r];
         }
+    }
+}
+
+void ak_general_partials(const ak_sequence *sequence, const double theta[3],
+                         const double theta_dot[3], double W_fixed[3][3], double W_body[3][3],
+                         double W_fixed_dot[3][3], double W_body_dot[3][3]) {
+    chain ch;
+    make_chain(sequence, theta, &ch);
+    chain_partials(&ch, theta_dot, W_fixed, W_body, W_fixed_dot, W_body_dot);
+}
+
+/* Every orientation output from one chain; body123_rotation_outputs makes a copy of it. */
+static inline void chain_rotation_outputs(const ak_sequence *sequence, const ak_sines *sines,
+                                          const ak_sines *half, const double theta_dot[3],
+                                          ak_rotation_outputs *out) {
+    chain ch;
+    chain_of_sines(sequence, sines, &ch);
+    chain_rotation_matrix(&ch, out->R);
+    chain_quaternion(&ch, half, out->q);
+    chain_partials(&ch, theta_dot, out->W_fixed, out->W_body, out->W_fixed_dot, out->W_body_dot);
+}
+
+/* chain_rotation_outputs for body123, specialized as body123_kinematics. */
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
+static void body123_rotation_outputs(const ak_sines *sines, const ak_sines *half,
+                                     const double theta_dot[3], ak_rotation_outputs *out) {
+    chain_rotation_outputs(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], sines, half, theta_dot, out);
+}
+
+void ak_general_rotation_outputs(const ak_sequence *sequence, const ak_sines *sines,
+                                 const ak_sines *half, const double theta_dot[3],
+                                 ak_rotation_outputs *out) {
+    if (sequence == &AK_SEQUENCES[AK_SEQUENCE_DEFAULT]) {
+        body123_rotation_outputs(sines, half, theta_dot, out);
+    } else {
+        chain_rotation_outputs(sequence, sines, half, theta_dot, out);
     }
 }
 

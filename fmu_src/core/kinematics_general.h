@@ -87,11 +87,41 @@ typedef enum {
 /* Multiple of DBL_EPSILON * max(1, |theta2|) below which the distance counts as zero. */
 #define AK_SINGULAR_ROUNDING 4.0
 
+/* sin and cos of three angles, indexed like theta. */
+typedef struct {
+    double sin[3];
+    double cos[3];
+} ak_sines;
+
+/* The only transcendental functions of the forward map: sin and cos of theta_k (section 1) and
+ * of theta_k / 2 (section 5). Computed once, they serve every output below. */
+void ak_angle_sines(const double theta[3], ak_sines *sines);
+void ak_half_angle_sines(const double theta[3], ak_sines *half);
+
 /* Angular velocity and acceleration of B in both sets of components (section 2, 3). */
 void ak_general_angular_kinematics(const ak_sequence *sequence, const double theta[3],
                                    const double theta_dot[3], const double theta_ddot[3],
                                    double omega_fixed[3], double omega_body[3],
                                    double alpha_fixed[3], double alpha_body[3]);
+
+/* The same, from sines = ak_angle_sines(theta): bit for bit the same results. */
+void ak_general_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
+                                            const double theta_dot[3], const double theta_ddot[3],
+                                            double omega_fixed[3], double omega_body[3],
+                                            double alpha_fixed[3], double alpha_body[3]);
+
+/* Every orientation output at once, as the functions below give them one by one. */
+typedef struct {
+    double R[3][3];
+    double q[4];
+    double W_fixed[3][3], W_body[3][3], W_fixed_dot[3][3], W_body_dot[3][3];
+} ak_rotation_outputs;
+
+/* From sines = ak_angle_sines(theta) and half = ak_half_angle_sines(theta), with no further
+ * sin or cos; bit for bit what the three functions below return for theta. */
+void ak_general_rotation_outputs(const ak_sequence *sequence, const ak_sines *sines,
+                                 const ak_sines *half, const double theta_dot[3],
+                                 ak_rotation_outputs *out);
 
 /* Direction cosine matrix R (row-major, v_fixed = R v_body). */
 void ak_general_rotation_matrix(const ak_sequence *sequence, const double theta[3], double R[3][3]);

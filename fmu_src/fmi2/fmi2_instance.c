@@ -10,6 +10,21 @@ static void log_for_model(void *owner, ak_log_category category, ak_status statu
     ak_log((const ak_instance *)owner, category, STATUS[status], "%s", message);
 }
 
+static ak_real_role real_role(const ak_variable *variable) {
+    if (variable == NULL || variable->type != AK_TYPE_REAL) {
+        return AK_REAL_ABSENT;
+    }
+    switch (variable->causality) {
+    case AK_CAUSALITY_INPUT:
+        return AK_REAL_INPUT;
+    case AK_CAUSALITY_PARAMETER:
+        return AK_REAL_PARAMETER;
+    case AK_CAUSALITY_OUTPUT:
+    default:
+        return variable->group == AK_GROUP_LAZY ? AK_REAL_LAZY_OUTPUT : AK_REAL_MAIN_OUTPUT;
+    }
+}
+
 void ak_instance_reset(ak_instance *instance) {
     for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
         /* Errors and warnings are reported unless switched off; the call trace only on request. */
@@ -25,6 +40,7 @@ void ak_instance_reset(ak_instance *instance) {
     for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
         const ak_variable *variable = ak_variable_of((unsigned int)vr);
         instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
+        instance->real_role[vr] = (unsigned char)real_role(variable);
     }
     ak_instance_clear_input_derivatives(instance);
     if (AK_MODEL.initialize != NULL) {

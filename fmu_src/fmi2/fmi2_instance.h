@@ -25,6 +25,16 @@ typedef enum {
     AK_STATE_CONTINUOUS_TIME_MODE = 1 << 8
 } ak_state;
 
+/* What a get or set of a Real value reference involves, in increasing order of what a get must
+ * bring up to date. */
+typedef enum {
+    AK_REAL_ABSENT = 0, /* no Real variable has this value reference */
+    AK_REAL_INPUT,
+    AK_REAL_PARAMETER,
+    AK_REAL_MAIN_OUTPUT,
+    AK_REAL_LAZY_OUTPUT
+} ak_real_role;
+
 typedef struct ak_instance_s {
     fmi2CallbackFunctions functions; /* a copy: the master's struct need not outlive the call */
     char *instance_name;
@@ -37,6 +47,9 @@ typedef struct ak_instance_s {
     bool stop_time_defined;
     double stop_time;
 
+    /* The role of each value reference, from the model's variable table (ak_instance_reset):
+     * the getter and setter read one byte per value instead of a variable's record. */
+    unsigned char real_role[AK_MAX_VARIABLES];
     /* Values by value reference, input derivatives and the logger, as the model sees them. */
     ak_model_data data;
     /* True when an input or parameter changed since the main output group was last computed;
@@ -53,6 +66,11 @@ typedef struct ak_instance_s {
     /* FMU states made by this instance and not yet freed (fmi2_fmu_state.c). */
     struct ak_fmu_state_s *live_states;
 } ak_instance;
+
+/* The role of a value reference in a Real get or set (AK_REAL_ABSENT for any out of range). */
+static inline ak_real_role ak_real_role_of(const ak_instance *instance, unsigned int vr) {
+    return vr < AK_MAX_VARIABLES ? (ak_real_role)instance->real_role[vr] : AK_REAL_ABSENT;
+}
 
 /* Frees the FMU states the master did not free (fmi2FreeInstance). */
 void ak_free_all_fmu_states(ak_instance *instance);

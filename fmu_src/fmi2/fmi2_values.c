@@ -71,9 +71,8 @@ static bool parameter_settable(const ak_instance *instance, ak_function function
 static void store(ak_instance *instance, ak_function function, bool trace, fmi2ValueReference vr,
                   double value) {
     if (trace) {
-        const ak_variable *variable = ak_variable_of(vr); /* checked by the caller: never NULL */
         ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s: %s = %.17g", ak_function_name(function),
-               variable != NULL ? variable->name : "?", value);
+               ak_variable_of(vr)->name, value);
     }
     /* Only a real change makes the outputs stale: masters often set unchanged inputs. */
     if (instance->data.values[vr] != value) {
@@ -89,24 +88,27 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         !arrays_given(instance, AK_FMI2_GET_REAL, nvr, vr, value)) {
         return fmi2Error;
     }
-    /* Which output groups are read decides what must be brought up to date. */
-    bool main = false, lazy = false;
+    /* The highest role read decides what must be brought up to date: nothing for inputs and
+     * parameters, the main group for its outputs, both groups for a lazy output. */
+    ak_real_role lowest = AK_REAL_LAZY_OUTPUT, highest = AK_REAL_INPUT;
     for (size_t i = 0; i < nvr; i++) {
-        const ak_variable *variable =
-            variable_of_type(instance, AK_FMI2_GET_REAL, vr[i], i, AK_TYPE_REAL);
-        if (variable == NULL) {
-            return fmi2Error;
+        const ak_real_role role = ak_real_role_of(instance, vr[i]);
+        lowest = role < lowest ? role : lowest;
+        highest = role > highest ? role : highest;
+    }
+    if (lowest == AK_REAL_ABSENT) { /* the first such value reference, and why */
+        size_t i = 0;
+        while (ak_real_role_of(instance, vr[i]) != AK_REAL_ABSENT) {
+            i++;
         }
-        if (variable->causality == AK_CAUSALITY_OUTPUT ||
-            variable->causality == AK_CAUSALITY_LOCAL) {
-            main = true;
-            lazy = lazy || variable->group == AK_GROUP_LAZY;
-        }
+        (void)variable_of_type(instance, AK_FMI2_GET_REAL, vr[i], i, AK_TYPE_REAL);
+        return fmi2Error;
     }
     fmi2Status status = fmi2OK;
-    if (main) {
-        status = ak_instance_read_status(instance, lazy ? ak_instance_update_all_outputs(instance)
-                                                        : ak_instance_update_outputs(instance));
+    if (highest == AK_REAL_LAZY_OUTPUT) {
+        status = ak_instance_read_status(instance, ak_instance_update_all_outputs(instance));
+    } else if (highest == AK_REAL_MAIN_OUTPUT) {
+        status = ak_instance_read_status(instance, ak_instance_update_outputs(instance));
     }
     for (size_t i = 0; i < nvr; i++) {
         value[i] = instance->data.values[vr[i]];
@@ -122,6 +124,10 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
+        /* The usual call first: a finite value for an input needs no other check. */
+        if (ak_real_role_of(instance, vr[i]) == AK_REAL_INPUT && isfinite(value[i])) {
+            continue;
+        }
         const ak_variable *variable =
             variable_of_type(instance, AK_FMI2_SET_REAL, vr[i], i, AK_TYPE_REAL);
         if (variable == NULL) {

@@ -160,7 +160,7 @@ static fmi3Status derivative(fmi3Instance c, ak3_function self, const char *flag
     for (size_t i = 0; i < nUnknowns; i++) {
         unsigned int rows[AK_MAX_VARIABLES];
         const size_t n = expand(&unknowns[i], 1, rows, AK_MAX_VARIABLES);
-        double J[AK_MAX_VARIABLES][AK_MAX_INPUTS];
+        double J[AK_MAX_VARIABLES][AK_MAX_KNOWNS]; /* columns: the inputs (then states: none here) */
         AK_MODEL.jacobian(&instance->data, rows, n, J);
         for (size_t r = 0; r < n; r++, row++) {
             size_t column = 0;

@@ -28,6 +28,7 @@
 #define AK_MAX_STATES 4
 /* The knowns of a directional derivative: the inputs, then the continuous states. */
 #define AK_MAX_KNOWNS (AK_MAX_INPUTS + AK_MAX_STATES)
+#define AK_MAX_WORK 6
 
 /* Highest order of input derivative a master may give: the inputs follow a polynomial of this
  * degree over a communication step. */
@@ -69,6 +70,9 @@ typedef struct {
      * the master gave it; zero when not given. any_input_derivative is false when all are zero. */
     double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
     bool any_input_derivative;
+    /* The model's own: what evaluate computed and evaluate_lazy reuses (evaluate_lazy always
+     * runs after an evaluate for the same inputs). The layers never read it. */
+    double work[AK_MAX_WORK];
     /* The owning layer's logger: the message is fully formatted. */
     void (*log)(void *owner, ak_log_category category, ak_status status, const char *message);
     void *owner;

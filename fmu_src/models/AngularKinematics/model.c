@@ -4,6 +4,7 @@
 #include "AngularKinematics_variables.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "kinematics_general.h"
 #include "kinematics_general_jacobian.h"
@@ -15,12 +16,19 @@ static const ak_sequence *sequence_of(const ak_model_data *data) {
     return &AK_SEQUENCES[(int)data->values[AK_VR_SEQUENCE] - 1];
 }
 
+/* The sines of the angles, kept in data->work from evaluate for evaluate_lazy: the lazy group
+ * then needs only those of the half angles. */
+_Static_assert(sizeof(ak_sines) <= sizeof(((ak_model_data *)0)->work), "the work array holds them");
+
 static ak_eval_status evaluate(ak_model_data *data) {
     double *v = data->values;
-    ak_general_angular_kinematics(sequence_of(data), &v[AK_VR_THETA], &v[AK_VR_THETA_DOT],
-                                  &v[AK_VR_THETA_DDOT], &v[AK_VR_OMEGA_FIXED],
-                                  &v[AK_VR_OMEGA_BODY], &v[AK_VR_ALPHA_FIXED],
-                                  &v[AK_VR_ALPHA_BODY]);
+    ak_sines sines;
+    ak_angle_sines(&v[AK_VR_THETA], &sines);
+    memcpy(data->work, &sines, sizeof sines);
+    ak_general_angular_kinematics_of_sines(sequence_of(data), &sines, &v[AK_VR_THETA_DOT],
+                                           &v[AK_VR_THETA_DDOT], &v[AK_VR_OMEGA_FIXED],
+                                           &v[AK_VR_OMEGA_BODY], &v[AK_VR_ALPHA_FIXED],
+                                           &v[AK_VR_ALPHA_BODY]);
     return AK_EVAL_OK;
 }
 
@@ -34,17 +42,19 @@ static void store_matrix(double *out, double M[3][3]) {
 
 static void evaluate_lazy(ak_model_data *data) {
     double *v = data->values;
-    const ak_sequence *sequence = sequence_of(data);
-    double R[3][3], W_fixed[3][3], W_body[3][3], W_fixed_dot[3][3], W_body_dot[3][3];
-    ak_general_rotation_matrix(sequence, &v[AK_VR_THETA], R);
-    ak_general_quaternion(sequence, &v[AK_VR_THETA], &v[AK_VR_Q]);
-    ak_general_partials(sequence, &v[AK_VR_THETA], &v[AK_VR_THETA_DOT], W_fixed, W_body,
-                        W_fixed_dot, W_body_dot);
-    store_matrix(&v[AK_VR_R], R);
-    store_matrix(&v[AK_VR_W_FIXED], W_fixed);
-    store_matrix(&v[AK_VR_W_BODY], W_body);
-    store_matrix(&v[AK_VR_W_FIXED_DOT], W_fixed_dot);
-    store_matrix(&v[AK_VR_W_BODY_DOT], W_body_dot);
+    ak_sines sines, half;
+    memcpy(&sines, data->work, sizeof sines);
+    ak_half_angle_sines(&v[AK_VR_THETA], &half);
+    ak_rotation_outputs out;
+    ak_general_rotation_outputs(sequence_of(data), &sines, &half, &v[AK_VR_THETA_DOT], &out);
+    store_matrix(&v[AK_VR_R], out.R);
+    for (int k = 0; k < 4; k++) {
+        v[AK_VR_Q + k] = out.q[k];
+    }
+    store_matrix(&v[AK_VR_W_FIXED], out.W_fixed);
+    store_matrix(&v[AK_VR_W_BODY], out.W_body);
+    store_matrix(&v[AK_VR_W_FIXED_DOT], out.W_fixed_dot);
+    store_matrix(&v[AK_VR_W_BODY_DOT], out.W_body_dot);
 }
 
 static const char *check_parameter(const ak_variable *variable, double value) {
