@@ -28,6 +28,7 @@ set(AK_FMI2_HEADERS
   fmu_src/fmi2/fmi2_logging.h
   fmu_src/fmi2/fmi2_state_machine.h
   fmu_src/fmi2/fmi2_derivatives.h
+  fmu_src/common/ak_bytes.h
   fmu_src/models/model.h
   fmu_src/models/log_categories.h)
 set(AK_FMI3_SOURCES

@@ -14,7 +14,7 @@ if [ -z "${AK_SET_UP:-}" ]; then
 fi
 headers=$(.venv/bin/python -c "import fmpy, os; print(os.path.join(os.path.dirname(fmpy.__file__), 'c-code'))")
 read -r -a models <<<"$(.venv/bin/python -c "from codegen.project import MODELS; print(' '.join(MODELS))")"
-includes=(-I fmu_src/core -I fmu_src/models -I fmu_src/fmi2 -I "$headers")
+includes=(-I fmu_src/core -I fmu_src/models -I fmu_src/fmi2 -I fmu_src/common -I "$headers")
 common=(fmu_src/core/*.c fmu_src/fmi2/*.c fmu_src/models/model_log.c)
 cppcheck --version
 

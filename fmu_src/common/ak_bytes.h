@@ -1,6 +1,5 @@
-/* Little-endian encoding and the CRC-32 of the serialized FMU states: FMI-independent, header
- * only. The FMI 3 layer uses it; the FMI 2 layer keeps its own identical copy for now, so that
- * its sources/ and binary stay exactly those of 0.3 (switching it is a follow-up). */
+/* Little-endian encoding and the CRC-32 of the serialized FMU states of both FMI layers:
+ * FMI-independent, header only. */
 #ifndef ANGULAR_KINEMATICS_AK_BYTES_H
 #define ANGULAR_KINEMATICS_AK_BYTES_H
 

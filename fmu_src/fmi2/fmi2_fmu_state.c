@@ -29,6 +29,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "ak_bytes.h"
 #include "fmi2Functions.h"
 #include "fmi2_instance.h"
 #include "fmi2_logging.h"
@@ -69,7 +70,6 @@ static size_t state_size(void) {
     return offset_checksum() + 4u;
 }
 
-_Static_assert(sizeof(double) == 8, "the layout stores IEEE 754 binary64 doubles");
 
 /* The in-memory FMU state: the bytes, in the instance's list of live states. A pointer the
  * master gives back is looked up in that list by address, never dereferenced first: a stray or
@@ -91,71 +91,28 @@ typedef struct {
     double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
 } ak_state_content;
 
-static uint32_t crc32(const unsigned char *bytes, size_t n) {
-    uint32_t crc = 0xFFFFFFFFu;
-    for (size_t i = 0; i < n; i++) {
-        crc ^= bytes[i];
-        for (int bit = 0; bit < 8; bit++) {
-            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-        }
-    }
-    return ~crc;
-}
-
-static void put_u32(unsigned char *p, uint32_t x) {
-    for (int i = 0; i < 4; i++) {
-        p[i] = (unsigned char)(x >> (8 * i));
-    }
-}
-
-static uint32_t get_u32(const unsigned char *p) {
-    uint32_t x = 0;
-    for (int i = 0; i < 4; i++) {
-        x |= (uint32_t)p[i] << (8 * i);
-    }
-    return x;
-}
-
-static void put_f64(unsigned char *p, double value) {
-    uint64_t x;
-    memcpy(&x, &value, sizeof x);
-    for (int i = 0; i < 8; i++) {
-        p[i] = (unsigned char)(x >> (8 * i));
-    }
-}
-
-static double get_f64(const unsigned char *p) {
-    uint64_t x = 0;
-    for (int i = 0; i < 8; i++) {
-        x |= (uint64_t)p[i] << (8 * i);
-    }
-    double value;
-    memcpy(&value, &x, sizeof value);
-    return value;
-}
-
 static void encode(const ak_instance *instance, unsigned char bytes[AK_STATE_MAX_SIZE]) {
     memset(bytes, 0, state_size());
     memcpy(bytes + OFFSET_MAGIC, AK_STATE_MAGIC, 8);
-    put_u32(bytes + OFFSET_VERSION, AK_STATE_FORMAT_VERSION);
-    put_u32(bytes + OFFSET_SIZE, (uint32_t)state_size());
+    ak_put_u32(bytes + OFFSET_VERSION, AK_STATE_FORMAT_VERSION);
+    ak_put_u32(bytes + OFFSET_SIZE, (uint32_t)state_size());
     memcpy(bytes + OFFSET_GUID, AK_MODEL.guid, strlen(AK_MODEL.guid));
-    put_u32(bytes + OFFSET_FMU_TYPE, (uint32_t)instance->fmu_type);
-    put_u32(bytes + OFFSET_STATE, (uint32_t)instance->state);
-    put_f64(bytes + OFFSET_TIME, instance->time);
-    put_f64(bytes + OFFSET_STOP_TIME, instance->stop_time);
-    put_u32(bytes + OFFSET_STOP_TIME_DEFINED, instance->stop_time_defined ? 1u : 0u);
+    ak_put_u32(bytes + OFFSET_FMU_TYPE, (uint32_t)instance->fmu_type);
+    ak_put_u32(bytes + OFFSET_STATE, (uint32_t)instance->state);
+    ak_put_f64(bytes + OFFSET_TIME, instance->time);
+    ak_put_f64(bytes + OFFSET_STOP_TIME, instance->stop_time);
+    ak_put_u32(bytes + OFFSET_STOP_TIME_DEFINED, instance->stop_time_defined ? 1u : 0u);
     for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
-        put_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr, instance->data.values[vr]);
+        ak_put_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr, instance->data.values[vr]);
     }
     for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-            put_f64(bytes + offset_input_derivatives() +
+            ak_put_f64(bytes + offset_input_derivatives() +
                         8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n),
                     instance->data.input_derivatives[k][n]);
         }
     }
-    put_u32(bytes + offset_checksum(), crc32(bytes, offset_checksum()));
+    ak_put_u32(bytes + offset_checksum(), ak_crc32(bytes, offset_checksum()));
 }
 
 static const char *interface_name(uint32_t fmu_type) {
@@ -192,14 +149,14 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
                size < OFFSET_GUID ? "too short for the header" : "wrong magic bytes");
         return false;
     }
-    const uint32_t version = get_u32(bytes + OFFSET_VERSION);
+    const uint32_t version = ak_get_u32(bytes + OFFSET_VERSION);
     if (version != AK_STATE_FORMAT_VERSION) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: FMU state format version %u is not supported (this binary reads version %u)",
                name, version, AK_STATE_FORMAT_VERSION);
         return false;
     }
-    const uint32_t declared = get_u32(bytes + OFFSET_SIZE);
+    const uint32_t declared = ak_get_u32(bytes + OFFSET_SIZE);
     if (size != state_size() || declared != state_size()) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: the FMU state is %zu bytes long and declares %u bytes; format version %u "
@@ -208,8 +165,8 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
                state_size());
         return false;
     }
-    const uint32_t stored = get_u32(bytes + offset_checksum());
-    const uint32_t computed = crc32(bytes, offset_checksum());
+    const uint32_t stored = ak_get_u32(bytes + offset_checksum());
+    const uint32_t computed = ak_crc32(bytes, offset_checksum());
     if (stored != computed) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: the FMU state is corrupt: its CRC-32 is 0x%08x, the bytes give 0x%08x", name,
@@ -225,7 +182,7 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
                name, guid, AK_MODEL.model_identifier, AK_MODEL.guid);
         return false;
     }
-    const uint32_t fmu_type = get_u32(bytes + OFFSET_FMU_TYPE);
+    const uint32_t fmu_type = ak_get_u32(bytes + OFFSET_FMU_TYPE);
     if (fmu_type != (uint32_t)instance->fmu_type) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: the FMU state is of a %s instance (fmuType %u); this instance is for %s",
@@ -233,12 +190,12 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
                interface_name((uint32_t)instance->fmu_type));
         return false;
     }
-    const uint32_t state = get_u32(bytes + OFFSET_STATE);
-    const uint32_t stop_time_defined = get_u32(bytes + OFFSET_STOP_TIME_DEFINED);
-    content->time = get_f64(bytes + OFFSET_TIME);
-    content->stop_time = get_f64(bytes + OFFSET_STOP_TIME);
+    const uint32_t state = ak_get_u32(bytes + OFFSET_STATE);
+    const uint32_t stop_time_defined = ak_get_u32(bytes + OFFSET_STOP_TIME_DEFINED);
+    content->time = ak_get_f64(bytes + OFFSET_TIME);
+    content->stop_time = ak_get_f64(bytes + OFFSET_STOP_TIME);
     if (!is_one_state(state) || !state_belongs_to(state, fmu_type) || stop_time_defined > 1 ||
-        get_u32(bytes + OFFSET_RESERVED) != 0 || !isfinite(content->time) ||
+        ak_get_u32(bytes + OFFSET_RESERVED) != 0 || !isfinite(content->time) ||
         !isfinite(content->stop_time)) {
         ak_log(instance, AK_LOG_ERROR, fmi2Error,
                "%s: the FMU state holds an impossible header (state 0x%x, time %g, stop time "
@@ -248,7 +205,7 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
     }
     for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
         const ak_variable *variable = ak_variable_of((unsigned int)vr);
-        content->values[vr] = get_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr);
+        content->values[vr] = ak_get_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr);
         if (variable == NULL) {
             continue; /* a hole of the table: never read */
         }
@@ -270,7 +227,7 @@ static bool decode(const ak_instance *instance, ak_function function, const unsi
     }
     for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-            const double d = get_f64(bytes + offset_input_derivatives() +
+            const double d = ak_get_f64(bytes + offset_input_derivatives() +
                                      8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n));
             if (!isfinite(d)) {
                 ak_log(instance, AK_LOG_ERROR, fmi2Error,
