@@ -57,7 +57,8 @@ def running(make_instance, name="running", model=None):
     names = list(inputs)
     instance = make_instance(name)
     instance.initialize(inputs=inputs, stop_time=10.0)
-    set_derivatives(instance, {names[0]: 0.5, names[4]: -1.0, names[8]: 2.0})
+    # The first, middle and last inputs (theta[1], theta_dot[2], theta_ddot[3] of AngularKinematics).
+    set_derivatives(instance, {names[0]: 0.5, names[len(names) // 2]: -1.0, names[-1]: 2.0})
     stepping(instance, 0.0, 4)
     return instance
 
