@@ -7,6 +7,7 @@ import os
 import pathlib
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
@@ -36,6 +37,29 @@ def sequence_cases():
 # (scripts/check_sanitizers.sh passes its ASan builds); any other model is tested as dist/<Model>.fmu.
 FMU_ENVIRONMENT = {"AngularKinematics": "AK_FMU", "EulerRates": "AK_EULER_FMU",
                    "AttitudePropagator": "AK_ATTITUDE_FMU"}
+
+
+def description_path_of(model):
+    """The model's modelDescription.xml in the repository (generated from its description.py)."""
+    return ROOT / "modelDescription.xml" if model == "AngularKinematics" else \
+        ROOT / "fmu_src" / "models" / model / "modelDescription.xml"
+
+
+@functools.lru_cache(maxsize=None)
+def value_references_of(model):
+    """{name: value reference} of every variable of the model, from its modelDescription.xml, so
+    that a test stays true when a variable is added (it takes the next value reference)."""
+    root = ET.parse(description_path_of(model)).getroot()
+    return {v.get("name"): int(v.get("valueReference")) for v in root.iter("ScalarVariable")}
+
+
+def fmu_state_size(model):
+    """The size of a serialized FMU state (format version 2): a 92-byte header and CRC, 8 bytes per
+    value reference (N) and 16 (two input derivatives) per input (I): 92 + 8 N + 16 I."""
+    root = ET.parse(description_path_of(model)).getroot()
+    variables = list(root.iter("ScalarVariable"))
+    inputs = [v for v in variables if v.get("causality") == "input"]
+    return 92 + 8 * len(variables) + 16 * len(inputs)
 
 
 def fmu_path_of(model):
