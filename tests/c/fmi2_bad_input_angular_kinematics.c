@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "fmi2_bad_input_table.h"
+#include "AngularKinematics_variables.h"
 
 enum {
     INSTANTIATED = AK_IN_INSTANTIATED,
@@ -15,15 +16,15 @@ enum {
 
 const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- values ------------------------------------------------------------------------------ */
-    {STEP_COMPLETE, "fmi2SetReal(c, {0, 71}, 2, {7, 7})", AK_OP_SET_REAL,
-     {.vr = (const fmi2ValueReference[]){0, 71}, .nvr = 2, .values = (fmi2Real[]){7.0, 7.0}},
+    {STEP_COMPLETE, "fmi2SetReal(c, {0, @PAST@}, 2, {7, 7})", AK_OP_SET_REAL,
+     {.vr = (const fmi2ValueReference[]){0, AK_N_VALUE_REFERENCES}, .nvr = 2, .values = (fmi2Real[]){7.0, 7.0}},
      fmi2Error,
-     "fmi2SetReal: vr[1] = 71 is not a value reference of this FMU (0 to 70)", false},
+     "fmi2SetReal: vr[1] = @PAST@ is not a value reference of this FMU (0 to @LAST@)", false},
     {STEP_COMPLETE, "fmi2SetReal(c, {4294967295}, 1, {7})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){4294967295u}, .nvr = 1, .values = (fmi2Real[]){7.0}},
      fmi2Error,
      "fmi2SetReal: vr[0] = 4294967295 is not a value reference of this FMU "
-     "(0 to 70)", false},
+     "(0 to @LAST@)", false},
     {STEP_COMPLETE, "fmi2SetReal(c, {9}, 1, {1})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){9}, .nvr = 1, .values = (fmi2Real[]){1.0}}, fmi2Error,
      "fmi2SetReal: vr[0] = 9 is omega_fixed[1], an output: only inputs and parameters can be "
@@ -51,7 +52,7 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
      {.vr = (const fmi2ValueReference[]){9, 1000}, .nvr = 2, .values = (fmi2Real[2]){0}},
      fmi2Error,
      "fmi2GetReal: vr[1] = 1000 is not a value reference of this FMU (0 to "
-     "70)", false},
+     "@LAST@)", false},
     {STEP_COMPLETE, "fmi2GetReal(c, {21, 70}, 2, v)", AK_OP_GET_REAL,
      {.vr = (const fmi2ValueReference[]){21, 70}, .nvr = 2, .values = (fmi2Real[2]){0}},
      fmi2Error,
@@ -211,7 +212,7 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- FMU state: messages naming the model or its state's size -------------------------- */
     {STEP_COMPLETE, "fmi2SerializeFMUstate(c, state, bytes, 8)", AK_OP_SERIALIZE_FMU_STATE,
      {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error,
-     "fmi2SerializeFMUstate: size = 8 is too small; the state needs 804 "
+     "fmi2SerializeFMUstate: size = 8 is too small; the state needs @STATE_BYTES@ "
      "bytes (fmi2SerializedFMUstateSize)", .with_fmu_state = true},
     {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, {0, 0, 0, 0, 0, 0, 0, 0}, 8, &state)",
      AK_OP_DE_SERIALIZE_FMU_STATE,

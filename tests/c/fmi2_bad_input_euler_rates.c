@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "fmi2_bad_input_table.h"
+#include "EulerRates_variables.h"
 
 enum {
     INSTANTIATED = AK_IN_INSTANTIATED,
@@ -17,10 +18,10 @@ enum {
 
 const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- values ------------------------------------------------------------------------------ */
-    {STEP_COMPLETE, "fmi2SetReal(c, {0, 25}, 2, {7, 7})", AK_OP_SET_REAL,
-     {.vr = (const fmi2ValueReference[]){0, 25}, .nvr = 2, .values = (fmi2Real[]){7.0, 7.0}},
+    {STEP_COMPLETE, "fmi2SetReal(c, {0, @PAST@}, 2, {7, 7})", AK_OP_SET_REAL,
+     {.vr = (const fmi2ValueReference[]){0, ER_N_VALUE_REFERENCES}, .nvr = 2, .values = (fmi2Real[]){7.0, 7.0}},
      fmi2Error,
-     "fmi2SetReal: vr[1] = 25 is not a value reference of this FMU (0 to 24)", false},
+     "fmi2SetReal: vr[1] = @PAST@ is not a value reference of this FMU (0 to @LAST@)", false},
     {STEP_COMPLETE, "fmi2SetReal(c, {9}, 1, {1})", AK_OP_SET_REAL,
      {.vr = (const fmi2ValueReference[]){9}, .nvr = 1, .values = (fmi2Real[]){1.0}}, fmi2Error,
      "fmi2SetReal: vr[0] = 9 is theta_dot[1], an output: only inputs and parameters can be "
@@ -107,7 +108,7 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- FMU state: messages naming the model or its state's size -------------------------- */
     {STEP_COMPLETE, "fmi2SerializeFMUstate(c, state, bytes, 8)", AK_OP_SERIALIZE_FMU_STATE,
      {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error,
-     "fmi2SerializeFMUstate: size = 8 is too small; the state needs 436 "
+     "fmi2SerializeFMUstate: size = 8 is too small; the state needs @STATE_BYTES@ "
      "bytes (fmi2SerializedFMUstateSize)", .with_fmu_state = true},
     {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, {0, 0, 0, 0, 0, 0, 0, 0}, 8, &state)",
      AK_OP_DE_SERIALIZE_FMU_STATE,

@@ -85,9 +85,42 @@ static void print_row(const char *state, const char *call, const char *status,
            message ? message : "(nothing logged)", message ? "`" : "");
 }
 
+/* A row's call or message with its placeholders (fmi2_bad_input_table.h) replaced by the numbers
+ * of the model the program is built for. */
+static void expand(const char *text, char *out, size_t size) {
+    static const char *const names[] = {"@PAST@", "@LAST@", "@STATE_BYTES@"};
+    const long values[] = {AK_MODEL.n_value_references, AK_MODEL.n_value_references - 1L,
+                           92L + 8L * AK_MODEL.n_value_references + 16L * AK_MODEL.n_inputs};
+    size_t used = 0;
+    out[0] = '\0';
+    while (*text != '\0' && used + 1 < size) {
+        bool replaced = false;
+        for (size_t k = 0; k < sizeof names / sizeof names[0] && !replaced; k++) {
+            const size_t length = strlen(names[k]);
+            if (strncmp(text, names[k], length) == 0) {
+                const int written = snprintf(out + used, size - used, "%ld", values[k]);
+                used += written > 0 ? (size_t)written : 0;
+                used = used < size ? used : size - 1;
+                text += length;
+                replaced = true;
+            }
+        }
+        if (!replaced) {
+            out[used++] = *text++;
+            out[used] = '\0';
+        }
+    }
+}
+
 static void run_bad_call(const ak_bad_call *bad, size_t row, bool print_table) {
-    char context[256];
-    snprintf(context, sizeof context, "bad call %zu: %s", row + 1, bad->call);
+    char call[512];
+    char expected[512];
+    expand(bad->call, call, sizeof call);
+    if (bad->message != NULL) {
+        expand(bad->message, expected, sizeof expected);
+    }
+    char context[600];
+    snprintf(context, sizeof context, "bad call %zu: %s", row + 1, call);
     ak_recorder recorder;
     ak_recorder_clear(&recorder);
     const fmi2CallbackFunctions functions = ak_test_callbacks(&recorder);
@@ -113,7 +146,7 @@ static void run_bad_call(const ak_bad_call *bad, size_t row, bool print_table) {
         printf("     returned %s, expected %s\n", ak_status_name(status),
                ak_status_name(bad->status));
     }
-    check_logged(&recorder, context, status, bad->message, "bad-input");
+    check_logged(&recorder, context, status, bad->message != NULL ? expected : NULL, "bad-input");
     /* A read answered with fmi2Discard ran the evaluation (which failed): see
      * ak_snapshot_same_inputs. */
     check(bad->status == fmi2Discard ? ak_snapshot_same_inputs(&before, c)
@@ -127,7 +160,7 @@ static void run_bad_call(const ak_bad_call *bad, size_t row, bool print_table) {
     fmi2FreeInstance(c);
     check(ak_test_live_allocations() == 0, context, "memory left allocated after freeing");
     if (print_table && status_ok) {
-        print_row(ak_test_state_label(bad->in), bad->call, ak_status_name(status),
+        print_row(ak_test_state_label(bad->in), call, ak_status_name(status),
                   logged.count == 1 ? logged.messages[0].text : NULL);
     }
 }

@@ -3,7 +3,10 @@ the record that proves a rebuilt FMU computes bit for bit what the released one 
 
     .venv/bin/python tests/python/golden_outputs.py record DIR_WITH_FMUS tests/python/data/golden_0.2.json
 
-test_bit_identity.py recomputes the digests with the FMUs of dist/ and compares."""
+The record holds, per model, the names of the outputs the recorded FMU had ("outputs", in
+value-reference order) and the digests of those outputs ("digests"). test_bit_identity.py
+recomputes the digests of the same outputs with the FMUs of dist/ and compares: an output added
+since does not enter them."""
 import hashlib
 import json
 import sys
@@ -32,13 +35,16 @@ def cases(model):
     return [(sequence, frame) for sequence in range(1, 25) for frame in frames]
 
 
-def digests(fmu_path):
+def digests(fmu_path, output_names=None):
+    """(model identifier, the output names digested, {sequence[/frame]: digest}); output_names:
+    the outputs to digest, in that order (default: every output of the FMU)."""
     md = read_model_description(fmu_path)
     model = md.coSimulation.modelIdentifier
     vr = {v.name: v.valueReference for v in md.modelVariables}
     inputs = [v.valueReference for v in md.modelVariables if v.causality == "input"]
-    # The outputs of release 0.2, by name: a new output must not change the digest.
-    outputs = [v.valueReference for v in md.modelVariables if v.causality == "output"]
+    if output_names is None:
+        output_names = [v.name for v in md.modelVariables if v.causality == "output"]
+    outputs = [vr[name] for name in output_names]
     unzipdir = extract(fmu_path)
     fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir, modelIdentifier=model,
                     instanceName="golden")
@@ -71,7 +77,7 @@ def digests(fmu_path):
         result[key] = h.hexdigest()
     fmu.terminate()
     fmu.freeInstance()
-    return model, result
+    return model, output_names, result
 
 
 def main():
@@ -80,8 +86,8 @@ def main():
     import pathlib
     record = {}
     for name in ("AngularKinematics", "EulerRates"):
-        model, result = digests(str(pathlib.Path(sys.argv[2]) / f"{name}.fmu"))
-        record[model] = result
+        model, outputs, result = digests(str(pathlib.Path(sys.argv[2]) / f"{name}.fmu"))
+        record[model] = {"outputs": outputs, "digests": result}
     pathlib.Path(sys.argv[3]).write_text(json.dumps(record, indent=1, sort_keys=True) + "\n")
 
 

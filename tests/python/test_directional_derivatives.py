@@ -7,6 +7,10 @@ import numpy as np
 import pytest
 
 import reference
+from conftest import value_references_of
+
+# The first value reference past AngularKinematics' last (a new variable takes it).
+PAST = len(value_references_of("AngularKinematics"))
 
 RNG = np.random.default_rng(20261121)
 POINTS = [RNG.uniform(-4, 4, 9) for _ in range(6)] + [
@@ -106,8 +110,8 @@ def test_follows_the_current_inputs(make_instance):
                                "output; expected an input"),
     ([9], [70], [1.0], "fmi2GetDirectionalDerivative: vKnown_ref[0] = 70 is sequence, a parameter; "
                        "expected an input"),
-    ([71], [0], [1.0], "fmi2GetDirectionalDerivative: vUnknown_ref[0] = 71 is not a value reference of "
-                       "this FMU (0 to 70)"),
+    ([PAST], [0], [1.0], f"fmi2GetDirectionalDerivative: vUnknown_ref[0] = {PAST} is not a value "
+                         f"reference of this FMU (0 to {PAST - 1})"),
     ([9], [0], [float("nan")], "fmi2GetDirectionalDerivative: dvKnown[0] = nan (seed of theta[1]) is "
                                "not finite"),
 ])

@@ -66,10 +66,11 @@ def page(model):
 
 def test_documentation_has_the_sections(page):
     parser, _ = page
-    assert parser.headings == ["What it computes", "Rotation sequences and conventions",
-                               "EulerRates: the inverse map", "FMI behaviour", "Capabilities",
-                               "Variables of AngularKinematics", "Variables of EulerRates",
-                               "Sequence items", "Capability flags"]
+    variables = [f"Variables of {name}" for name in project.MODELS]
+    start = parser.headings.index(variables[0])
+    assert parser.headings[:start] == ["What it computes", "Rotation sequences and conventions",
+                                       "EulerRates: the inverse map", "FMI behaviour", "Capabilities"]
+    assert parser.headings[start:] == variables + ["Sequence items", "Capability flags"]
 
 
 def test_every_link_of_the_documentation_resolves_inside_the_fmu(page):
@@ -87,27 +88,51 @@ def test_every_link_of_the_documentation_resolves_inside_the_fmu(page):
             assert anchor in parser.ids, f"{link}: no element with that id"
 
 
+def table_start(cells, variables):
+    """Where a model's variable table begins among the page's cells: the row of its first variable
+    followed by the row of the next one not in that row (name and value reference both)."""
+    first = variables[0]
+    label = label_of(first.name, variables, cells, 0)
+    second = next(v for v in variables if label_of(v.name, variables, cells, 0) != label)
+    second_label = label_of(second.name, variables, cells, 0)
+    return next(i for i in range(len(cells) - 12)
+                if cells[i] == label and refers_to(cells[i + 5], first.valueReference)
+                and cells[i + 7] == second_label and refers_to(cells[i + 12], second.valueReference))
+
+
+def refers_to(references, vr):
+    """Whether the value-reference column ("3, 4, 5" or "14 .. 22") holds vr."""
+    if " .. " in references:
+        first, last = map(int, references.split(" .. "))
+        return first <= vr <= last
+    return str(vr) in references.split(", ")
+
+
+def label_of(name, variables, cells, start):
+    """The name column of a variable's row: name[1..n] or name[1..3,1..3] for a group of array
+    elements, else the name (an element whose row is its own)."""
+    vector = re.fullmatch(r"(\w+)\[\d\]", name)
+    matrix = re.fullmatch(r"(\w+)\[\d,\d\]", name)
+    if vector:
+        n = sum(bool(re.fullmatch(re.escape(vector.group(1)) + r"\[\d\]", v.name)) for v in variables)
+        label = f"{vector.group(1)}[1..{n}]"
+    else:
+        label = f"{matrix.group(1)}[1..3,1..3]" if matrix else name
+    return label if label in cells[start:] else name
+
+
 @pytest.mark.parametrize("which", project.MODELS)
 def test_documentation_lists_every_variable_with_its_unit(which, page):
-    """Every model's variables are in the page (AngularKinematics' table first)."""
+    """Every model's variables are in the page, each in its model's table."""
     parser, _ = page
     cells = parser.cells
     description = read_model_description(str(fmu_path_of(which)))
-    start = 0 if which == "AngularKinematics" else cells.index("omega[1..3]") - 7  # its theta row
+    start = table_start(cells, description.modelVariables)
     for variable in description.modelVariables:
-        vector = re.fullmatch(r"(\w+)\[\d\]", variable.name)
-        matrix = re.fullmatch(r"(\w+)\[\d,\d\]", variable.name)
-        label = (f"{vector.group(1)}[1..{4 if vector.group(1) == 'q' else 3}]" if vector
-                 else f"{matrix.group(1)}[1..3,1..3]" if matrix else variable.name)
-        row = cells.index(label, start)
+        row = cells.index(label_of(variable.name, description.modelVariables, cells, start), start)
         assert cells[row + 3] == (variable.declaredType.unit or "")
         assert cells[row + 4] == (variable.declaredType.displayUnit or "")
-        references = cells[row + 5]
-        if " .. " in references:
-            first, last = map(int, references.split(" .. "))
-            assert first <= variable.valueReference <= last
-        else:
-            assert str(variable.valueReference) in references.split(", ")
+        assert refers_to(cells[row + 5], variable.valueReference), (variable.name, cells[row + 5])
 
 
 def test_documentation_states_the_capability_flags(page, model):

@@ -124,18 +124,21 @@ def test_outputs_computed_once_and_only_when_an_input_changed(model, make_model_
     instance = make_model_instance(logging_on=True)
     instance.initialize(inputs=model.valid_inputs)
     assert evaluations(instance) == 1
+    # A step changes nothing of a stateless model; it moves the states of a model with some, and
+    # its outputs are then evaluated once at the end of the step.
+    per_step = 1 if model.description.numberOfContinuousStates else 0
     for _ in range(5):
         instance.get(model.outputs)
         instance.fmu.doStep(instance.fmu.getRealStatus(2), 0.1)
     instance.set(model.valid_inputs)  # the same values again: nothing changed
     instance.get(model.outputs)
-    assert evaluations(instance) == 1
+    assert evaluations(instance) == 1 + 5 * per_step
     instance.set({model.inputs[2]: 0.0})
     instance.set({model.inputs[5]: 0.0})
-    assert evaluations(instance) == 1  # setting alone computes nothing
+    assert evaluations(instance) == 1 + 5 * per_step  # setting alone computes nothing
     instance.get(model.outputs[-1:])
     instance.get(model.outputs)
-    assert evaluations(instance) == 2
+    assert evaluations(instance) == 2 + 5 * per_step
 
 
 # --- Stepping ------------------------------------------------------------------------------------

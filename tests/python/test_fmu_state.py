@@ -12,11 +12,18 @@ import pytest
 from fmpy.fmi2 import fmi2FMUstate
 
 import reference
+from conftest import fmu_state_size, value_references_of
 
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
 OTHER = dict(zip(reference.INPUT_NAMES, [-1.0, 1.5, 0.2, 4.0, 0.1, -0.3, 0.0, 9.0, -2.0]))
 ALL = reference.INPUT_NAMES + reference.OUTPUT_NAMES
-SIZE = 804  # 92 + 8 x 71 values + 16 x 9 inputs (format version 2)
+# AngularKinematics' layout: 92 + 8 N + 16 I bytes, N value references, I inputs (format version 2).
+N_VALUES = len(value_references_of("AngularKinematics"))
+N_INPUTS = len(reference.INPUT_NAMES)
+SIZE = fmu_state_size("AngularKinematics")
+DERIVATIVES = 88 + 8 * N_VALUES  # where the input derivatives begin
+CRC = SIZE - 4
+SEQUENCE = value_references_of("AngularKinematics")["sequence"]
 GUID = b"{c3391885-ba93-4824-bb36-df39703b63ee}"
 
 
@@ -57,7 +64,8 @@ def running(make_instance, name="running", model=None):
     names = list(inputs)
     instance = make_instance(name)
     instance.initialize(inputs=inputs, stop_time=10.0)
-    set_derivatives(instance, {names[0]: 0.5, names[4]: -1.0, names[8]: 2.0})
+    # The first, middle and last inputs (theta[1], theta_dot[2], theta_ddot[3] of AngularKinematics).
+    set_derivatives(instance, {names[0]: 0.5, names[len(names) // 2]: -1.0, names[-1]: 2.0})
     stepping(instance, 0.0, 4)
     return instance
 
@@ -107,13 +115,14 @@ def test_layout_is_the_documented_one(make_instance):
     assert data[16:56] == GUID + b"\0\0"
     assert struct.unpack_from("<II", data, 56) == (1, 1 << 2)  # co-simulation, StepComplete
     assert struct.unpack_from("<ddII", data, 64) == (0.2, 10.0, 1, 0)
-    values = struct.unpack_from("<71d", data, 88)
+    assert SIZE == 92 + 8 * N_VALUES + 16 * N_INPUTS == len(data)
+    values = struct.unpack_from(f"<{N_VALUES}d", data, 88)
     assert np.array_equal(values[:21], instance.get(ALL))
-    assert values[70] == 1.0  # the parameter sequence: body123
-    derivatives = np.array(struct.unpack_from("<18d", data, 656)).reshape(9, 2)
+    assert values[SEQUENCE] == 1.0  # the parameter sequence: body123
+    derivatives = np.array(struct.unpack_from(f"<{2 * N_INPUTS}d", data, DERIVATIVES)).reshape(N_INPUTS, 2)
     assert derivatives[0, 0] == 0.5 and derivatives[4, 0] == -1.0 and derivatives[8, 0] == 2.0
     assert np.count_nonzero(derivatives) == 3
-    assert struct.unpack_from("<I", data, 800)[0] == zlib.crc32(data[:800])  # IEEE CRC-32
+    assert struct.unpack_from("<I", data, CRC)[0] == zlib.crc32(data[:CRC])  # IEEE CRC-32
 
 
 def test_state_objects_are_reused_when_passed_back(model, make_model_instance):
@@ -193,18 +202,18 @@ def bad_strings(data):
                        "(too short for the header)"),
         "header only": (data[:12], "fmi2DeSerializeFMUstate: the 12 bytes are not an AngularKinematics "
                                    "FMU state (too short for the header)"),
-        "truncated": (data[:-1], "fmi2DeSerializeFMUstate: the FMU state is 803 bytes long and declares "
-                                 "804 bytes; format version 2 of AngularKinematics has 804 bytes "
-                                 "(truncated or extended)"),
-        "extended": (data + b"\0", "fmi2DeSerializeFMUstate: the FMU state is 805 bytes long and "
-                                   "declares 804 bytes; format version 2 of AngularKinematics has 804 "
-                                   "bytes (truncated or extended)"),
-        "foreign": (b"PK\x03\x04" + bytes(800), "fmi2DeSerializeFMUstate: the 804 bytes are not an "
-                                                "AngularKinematics FMU state (wrong magic bytes)"),
+        "truncated": (data[:-1], f"fmi2DeSerializeFMUstate: the FMU state is {SIZE - 1} bytes long and "
+                                 f"declares {SIZE} bytes; format version 2 of AngularKinematics has "
+                                 f"{SIZE} bytes (truncated or extended)"),
+        "extended": (data + b"\0", f"fmi2DeSerializeFMUstate: the FMU state is {SIZE + 1} bytes long and "
+                                   f"declares {SIZE} bytes; format version 2 of AngularKinematics has "
+                                   f"{SIZE} bytes (truncated or extended)"),
+        "foreign": (b"PK\x03\x04" + bytes(SIZE - 4), f"fmi2DeSerializeFMUstate: the {SIZE} bytes are not "
+                                                     "an AngularKinematics FMU state (wrong magic bytes)"),
         "corrupt": (bytes(flipped), "fmi2DeSerializeFMUstate: the FMU state is corrupt: its CRC-32 is "
                                     "0x%08x, the bytes give 0x%08x" % (
-                                        struct.unpack_from("<I", data, 800)[0],
-                                        zlib.crc32(bytes(flipped[:800])))),
+                                        struct.unpack_from("<I", data, CRC)[0],
+                                        zlib.crc32(bytes(flipped[:CRC])))),
         "version 1": (forged(data, 8, "<I", 1), "fmi2DeSerializeFMUstate: FMU state format version 1 "
                                                 "is not supported (this binary reads version 2)"),
         "version 3": (forged(data, 8, "<I", 3), "fmi2DeSerializeFMUstate: FMU state format version 3 "
@@ -219,10 +228,10 @@ def bad_strings(data):
         "not finite": (forged(data, 88 + 8 * 4, "<d", float("inf")),
                        "fmi2DeSerializeFMUstate: the FMU state holds theta_dot[2] = inf, which is "
                        "not finite"),
-        "bad sequence": (forged(data, 88 + 8 * 70, "<d", 25.0),
+        "bad sequence": (forged(data, 88 + 8 * SEQUENCE, "<d", 25.0),
                          "fmi2DeSerializeFMUstate: the FMU state holds the parameter sequence = 25, "
                          "which it cannot have"),
-        "fractional sequence": (forged(data, 88 + 8 * 70, "<d", 2.5),
+        "fractional sequence": (forged(data, 88 + 8 * SEQUENCE, "<d", 2.5),
                                 "fmi2DeSerializeFMUstate: the FMU state holds the parameter sequence "
                                 "= 2.5, which it cannot have"),
     }

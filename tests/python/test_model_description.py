@@ -1,5 +1,5 @@
-"""Both modelDescription.xml files (AngularKinematics at the repository root, EulerRates in
-fmu_src/models/EulerRates/): valid, packaged as they are, and in agreement with the C variable table
+"""Every modelDescription.xml (AngularKinematics at the repository root, the others in
+fmu_src/models/<Model>/): valid, packaged as they are, and in agreement with the C variable table
 each binary is built from and with the dependency unions found on the sympy reference."""
 import math
 import re
@@ -20,14 +20,28 @@ MODELS = {
         names=KINEMATICS_INPUTS + KINEMATICS_OUTPUTS[:21] + [f"q[{k}]" for k in (1, 2, 3, 4)]
         + KINEMATICS_OUTPUTS[21:] + ["sequence"],
         parameters={"sequence": ("Integer", "1")},
-        union_table="### AngularKinematics"),
+        union_table="### AngularKinematics", states=0, output_derivative_order=1, directional=True),
     "EulerRates": dict(
         xml=ROOT / "fmu_src" / "models" / "EulerRates" / "modelDescription.xml",
         names=RATES_INPUTS + RATES_OUTPUTS + ["singularity_distance", "sequence", "frame",
                                               "tolerance"],
         parameters={"sequence": ("Integer", "1"), "frame": ("Integer", "1"),
                     "tolerance": ("Real", "0.0001")},
-        union_table="### EulerRates (union over sequences and over the frame parameter)"),
+        union_table="### EulerRates (union over sequences and over the frame parameter)",
+        states=0, output_derivative_order=0, directional=False),
+    "AttitudePropagator": dict(
+        xml=ROOT / "fmu_src" / "models" / "AttitudePropagator" / "modelDescription.xml",
+        names=[f"{name}[{k}]" for name in ("omega", "omega_dot") for k in (1, 2, 3)]
+        + [f"q[{k}]" for k in (1, 2, 3, 4)] + [f"der(q[{k}])" for k in (1, 2, 3, 4)]
+        + [f"R[{i},{j}]" for i in (1, 2, 3) for j in (1, 2, 3)]
+        + [f"{name}[{k}]" for name in ("theta", "theta_dot", "omega_fixed", "omega_body", "alpha_fixed",
+                                       "alpha_body") for k in (1, 2, 3)]
+        + ["singularity_distance", "frame", "sequence"] + [f"q0[{k}]" for k in (1, 2, 3, 4)]
+        + [f"{name}[{k}]" for name in ("omega_previous", "omega_dot_previous") for k in (1, 2, 3)]
+        + ["h_previous"] + [f"first_step_vector[{k}]" for k in (1, 2, 3)] + ["first_step_pending"],
+        parameters={"frame": ("Integer", "2"), "sequence": ("Integer", "1"), "q0[1]": ("Real", "1.0"),
+                    "q0[2]": ("Real", "0.0"), "q0[3]": ("Real", "0.0"), "q0[4]": ("Real", "0.0")},
+        union_table=None, states=4, output_derivative_order=0, directional=True),
 }
 
 
@@ -95,6 +109,8 @@ def test_variables_agree_with_c_table(model):
         assert variable.description == row["description"]
         if row["causality"] == "output":
             assert variable.start is None
+        elif row["causality"] == "local" and variable.start is None:
+            assert variable.initial == "calculated"  # derivatives and co-simulation history
         else:
             assert float(variable.start) == row["start"]
         if row["causality"] == "parameter" and row["type"] == "Real":
@@ -133,12 +149,22 @@ def test_parameters_and_enumerations(model):
 
 
 def test_model_structure_is_the_c_table_dependencies(model):
+    """The inputs each output depends on are the C table's; beyond the inputs, an output depends on
+    continuous states only and an initial unknown on parameters only (nothing, without states)."""
     description = model["description"]
     table = {v["name"]: sorted(v["dependencies"]) for v in model["table"]["variables"]
              if v["causality"] == "output"}
-    for section in (description.outputs, description.initialUnknowns):
-        listed = {u.variable.name: sorted(d.valueReference for d in u.dependencies) for u in section}
-        assert listed == table
+    states = {d.variable.derivative.name for d in description.derivatives}
+    for section, other in ((description.outputs, states),
+                           (description.initialUnknowns, set(model["parameters"]))):
+        listed = {u.variable.name: sorted(d.valueReference for d in u.dependencies
+                                          if d.causality == "input") for u in section}
+        assert {name: listed[name] for name in table} == table
+        assert set(listed) - set(table) == ({d.variable.name for d in description.derivatives}
+                                            if section is description.initialUnknowns else set())
+        for unknown in section:
+            extra = {d.name for d in unknown.dependencies if d.causality != "input"}
+            assert extra <= (other if states else set()), (unknown.variable.name, extra)
     assert [u.variable for u in description.outputs] == [v for v in description.modelVariables
                                                          if v.causality == "output"]
 
@@ -159,6 +185,9 @@ def test_model_structure_is_the_reference_union(model):
     """The union over the sequences (and frames) of the reference's dependencies: a fixed parameter
     selects the sequence, so <ModelStructure> lists what some value of it needs; q depends on the
     three angles and singularity_distance on theta[2] alone, for every sequence."""
+    if model["union_table"] is None:
+        pytest.skip(f"{model['name']}'s outputs depend on its continuous states, not on a sympy "
+                    "reference union (test_attitude_derivatives.py checks its <ModelStructure>)")
     expected = documented_unions(model["union_table"])
     expected.update({f"q[{k}]": {"theta[1]", "theta[2]", "theta[3]"} for k in (1, 2, 3, 4)})
     expected["singularity_distance"] = {"theta[2]"}
@@ -176,25 +205,28 @@ def test_default_experiment(model):
 def test_capability_flags(model):
     """Each flag is claimed because a test shows it works (docs/capabilities.md lists them)."""
     description = model["description"]
-    full = model["name"] == "AngularKinematics"
     cs = description.coSimulation
     assert cs.canHandleVariableCommunicationStepSize is True  # test_variable_steps.py, test_euler_rates.py
     assert cs.canBeInstantiatedOnlyOncePerProcess is False  # test_fmi_calls.py (two instances)
     assert cs.canInterpolateInputs is True  # test_input_interpolation.py, test_euler_rates.py
-    # AngularKinematics: test_output_derivatives.py, test_sequences_fmu.py; EulerRates: none
-    assert cs.maxOutputDerivativeOrder == (1 if full else 0)
+    # AngularKinematics: test_output_derivatives.py, test_sequences_fmu.py; the others: none
+    assert cs.maxOutputDerivativeOrder == model["output_derivative_order"]
     assert cs.canRunAsynchronuously is False  # test_fmi_calls.py (fmi2CancelStep refused)
     me = description.modelExchange
     assert me is not None  # test_model_exchange.py, test_euler_rates.py
     assert me.needsCompletedIntegratorStep is False
-    assert description.numberOfContinuousStates == 0
+    # AttitudePropagator's states: test_attitude_fmu.py
+    assert description.numberOfContinuousStates == model["states"]
     assert description.numberOfEventIndicators == 0
-    assert description.derivatives == []
+    assert [d.variable.name for d in description.derivatives] == [
+        f"der({d.variable.derivative.name})" for d in description.derivatives]
+    assert len(description.derivatives) == model["states"]
     for interface in (cs, me):
         assert interface.canGetAndSetFMUstate is True  # test_fmu_state.py, test_euler_rates.py
         assert interface.canSerializeFMUstate is True
-        # AngularKinematics: test_directional_derivatives.py, test_sequences_fmu.py; EulerRates: none
-        assert interface.providesDirectionalDerivative is full
+        # AngularKinematics: test_directional_derivatives.py, test_sequences_fmu.py;
+        # AttitudePropagator: test_attitude_derivatives.py; EulerRates: none
+        assert interface.providesDirectionalDerivative is model["directional"]
         assert interface.canBeInstantiatedOnlyOncePerProcess is False
         assert interface.canNotUseMemoryManagementFunctions is False
 

@@ -192,14 +192,24 @@ def test_model_exchange_functions_are_refused_on_co_simulation_instances(functio
     ("fmi2SetContinuousStates", "nx"), ("fmi2GetEventIndicators", "ni"),
     ("fmi2GetNominalsOfContinuousStates", "nx"),
 ])
-def test_state_and_indicator_arrays_must_be_empty(function, name, make_model_instance):
+def test_state_and_indicator_arrays_must_have_the_described_length(function, name, model,
+                                                                    make_model_instance):
+    """Event-indicator arrays must be empty; state arrays must hold numberOfContinuousStates
+    elements (empty for a model without states)."""
+    states = model.description.numberOfContinuousStates
+    length = 0 if name == "ni" else states
     instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, "ContinuousTimeMode")
-    buffer = (ctypes.c_double * 1)()
-    assert instance.call(function, buffer, 1) == 3
-    assert instance.errors() == [f"{function}: {name} = 1, but this FMU has no continuous states and "
-                                 f"no event indicators ({name} must be 0)"]
-    assert instance.call(function, buffer, 0) == 0
+    buffer = (ctypes.c_double * (length + 1))(*([1.0] * (length + 1)))
+    assert instance.call(function, buffer, length + 1) == 3
+    if length == 0:
+        kinds = "no event indicators" if states else "no continuous states and no event indicators"
+        expected = f"{function}: {name} = 1, but this FMU has {kinds} ({name} must be 0)"
+    else:
+        expected = (f"{function}: nx = {length + 1}, but this FMU has {states} continuous states "
+                    "(numberOfContinuousStates)")
+    assert instance.errors() == [expected]
+    assert instance.call(function, buffer, length) == 0
 
 
 def test_null_and_non_finite_arguments(make_model_instance):
