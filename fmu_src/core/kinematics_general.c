@@ -215,6 +215,8 @@ void ak_general_angular_kinematics_of_sines(const ak_sequence *sequence, const a
     }
 }
 
+/* The core's one-call form. The FMU calls the _of_sines form (it keeps the sines for the lazy
+ * group); the C tests and the benchmark's bare kernel call this one. */
 void ak_general_angular_kinematics(const ak_sequence *sequence, const double theta[3],
                                    const double theta_dot[3], const double theta_ddot[3],
                                    double omega_fixed[3], double omega_body[3],

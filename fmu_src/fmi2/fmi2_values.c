@@ -71,8 +71,9 @@ static bool parameter_settable(const ak_instance *instance, ak_function function
 static void store(ak_instance *instance, ak_function function, bool trace, fmi2ValueReference vr,
                   double value) {
     if (trace) {
+        const ak_variable *variable = ak_variable_of(vr); /* checked by the caller: never NULL */
         ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s: %s = %.17g", ak_function_name(function),
-               ak_variable_of(vr)->name, value);
+               variable != NULL ? variable->name : "?", value);
     }
     /* Only a real change makes the outputs stale: masters often set unchanged inputs. */
     if (instance->data.values[vr] != value) {
