@@ -1,7 +1,8 @@
 """A second, independent FMI 2 importer: FMI4j (JNI, from Maven Central) runs every FMU of dist/ in
 Co-Simulation and Model Exchange through examples/fmi4j/ (FmuRun.java) over the cross-check's
 reference inputs; every status must be fmi2OK and every output equal fmpy's bit for bit (the same
-binary, the same inputs, the same call sequence: examples/cross_check.py).
+binary, the same inputs, the same call sequence: examples/cross_check.py; Model Exchange with
+continuous states integrates them by explicit Euler steps in both).
 
 scripts/setup_importers.sh builds the driver; outside CI the test skips when Java or the driver is
 missing, in CI (CI=true) that fails."""
@@ -82,3 +83,7 @@ def test_fmi4j_equals_fmpy_bit_for_bit(java, fmu, interface, tmp_path, report):
     report(f"{outputs.size} values ({len(times)} rows x {len(expected_names)} outputs), "
            f"{differing} differ in any bit; {len(statuses)} rows all OK; java run {seconds:.2f} s")
     assert differing == 0
+    if description.numberOfContinuousStates:  # both importers integrated the states
+        states = [names.index(v.name) - 1 for v in description.modelVariables
+                  if v.name in ("q[1]", "q[2]", "q[3]", "q[4]")]
+        assert states and not np.array_equal(outputs[0, states], outputs[-1, states])
