@@ -1,8 +1,9 @@
-/* Little-endian encoding and the CRC-32 of the serialized FMU states of both FMI layers:
- * FMI-independent, header only. */
+/* Little-endian encoding and the CRC-32 of the serialized FMU states of both FMI layers, and
+ * the bitwise comparison of their setters: FMI-independent, header only. */
 #ifndef ANGULAR_KINEMATICS_AK_BYTES_H
 #define ANGULAR_KINEMATICS_AK_BYTES_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -19,6 +20,16 @@ static inline uint32_t ak_crc32(const unsigned char *bytes, size_t n) {
         }
     }
     return ~crc;
+}
+
+/* True when a and b are the same bits. A setter stores a new value only as a change when this is
+ * false: +0 replacing -0 is a change (outputs may carry the sign of a zero), an equal value is
+ * not (masters often set unchanged inputs). */
+static inline bool ak_same_double(double a, double b) {
+    uint64_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    return x == y;
 }
 
 static inline void ak_put_u32(unsigned char *p, uint32_t x) {

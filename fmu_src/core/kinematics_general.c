@@ -36,11 +36,15 @@ void ak_angle_sines(const double theta[3], ak_sines *sines) {
     }
 }
 
-void ak_half_angle_sines(const double theta[3], ak_sines *half) {
+void ak_half_angle_sines(const ak_sines *sines, ak_sines *half) {
     for (int k = 0; k < 3; k++) {
-        const double x = 0.5 * theta[k];
-        half->sin[k] = sin(x);
-        half->cos[k] = cos(x);
+        const double s = sines->sin[k], c = sines->cos[k];
+        /* The larger of |cos x/2| and |sin x/2|, then the other from sin x = 2 sin x/2 cos x/2:
+         * neither cancels, near x = 0 or near x = pi. */
+        const double large = sqrt(0.5 * (1.0 + fabs(c)));
+        const double small = s / (2.0 * large);
+        half->cos[k] = c >= 0.0 ? large : fabs(small);
+        half->sin[k] = c >= 0.0 ? small : copysign(large, s);
     }
 }
 
@@ -165,26 +169,60 @@ static inline void to_chain_order(const chain *ch, const double x[3], double out
     }
 }
 
+/* The axes of a chain, their rates and the rates in chain order: what every output of
+ * sections 2 and 3 is made of. */
+typedef struct {
+    double u[3][3], v[3][3], du[3][3], dv[3][3];
+    double pd[3], pdd[3];
+} chain_rates;
+
+static inline void chain_rates_of(const chain *ch, const double theta_dot[3],
+                                  const double theta_ddot[3], chain_rates *r) {
+    chain_axes(ch, r->u, r->v);
+    to_chain_order(ch, theta_dot, r->pd);
+    to_chain_order(ch, theta_ddot, r->pdd);
+    chain_axis_rates(ch, r->pd, r->du, r->dv);
+}
+
+static inline void combine_kinematics(const chain_rates *x, double omega_fixed[3],
+                                      double omega_body[3], double alpha_fixed[3],
+                                      double alpha_body[3]) {
+    const double *pd = x->pd, *pdd = x->pdd;
+    for (int r = 0; r < 3; r++) {
+        omega_fixed[r] = pd[0] * x->u[0][r] + pd[1] * x->u[1][r] + pd[2] * x->u[2][r];
+        omega_body[r] = pd[0] * x->v[0][r] + pd[1] * x->v[1][r] + pd[2] * x->v[2][r];
+        alpha_fixed[r] = pdd[0] * x->u[0][r] + pdd[1] * x->u[1][r] + pdd[2] * x->u[2][r] +
+                         pd[1] * x->du[1][r] + pd[2] * x->du[2][r];
+        alpha_body[r] = pdd[0] * x->v[0][r] + pdd[1] * x->v[1][r] + pdd[2] * x->v[2][r] +
+                        pd[0] * x->dv[0][r] + pd[1] * x->dv[1][r];
+    }
+}
+
+/* The partial angular velocity matrices: column theta_k is the axis of the chain angle k. */
+static inline void store_partials(const chain *ch, const chain_rates *x, double W_fixed[3][3],
+                                  double W_body[3][3], double W_fixed_dot[3][3],
+                                  double W_body_dot[3][3]) {
+    for (int m = 0; m < 3; m++) {
+        const int col = ch->angle[m];
+        for (int r = 0; r < 3; r++) {
+            W_fixed[r][col] = x->u[m][r];
+            W_body[r][col] = x->v[m][r];
+            W_fixed_dot[r][col] = x->du[m][r];
+            W_body_dot[r][col] = x->dv[m][r];
+        }
+    }
+}
+
 /* Omega and alpha (header, sections 2, 3); body123_kinematics copies it for constant axes. */
 static inline void chain_kinematics(const ak_sequence *sequence, const ak_sines *sines,
                                     const double theta_dot[3], const double theta_ddot[3],
                                     double omega_fixed[3], double omega_body[3],
                                     double alpha_fixed[3], double alpha_body[3]) {
     chain ch;
-    double u[3][3], v[3][3], du[3][3], dv[3][3], pd[3], pdd[3];
+    chain_rates x;
     chain_of_sines(sequence, sines, &ch);
-    chain_axes(&ch, u, v);
-    to_chain_order(&ch, theta_dot, pd);
-    to_chain_order(&ch, theta_ddot, pdd);
-    chain_axis_rates(&ch, pd, du, dv);
-    for (int r = 0; r < 3; r++) {
-        omega_fixed[r] = pd[0] * u[0][r] + pd[1] * u[1][r] + pd[2] * u[2][r];
-        omega_body[r] = pd[0] * v[0][r] + pd[1] * v[1][r] + pd[2] * v[2][r];
-        alpha_fixed[r] = pdd[0] * u[0][r] + pdd[1] * u[1][r] + pdd[2] * u[2][r] +
-                         pd[1] * du[1][r] + pd[2] * du[2][r];
-        alpha_body[r] = pdd[0] * v[0][r] + pdd[1] * v[1][r] + pdd[2] * v[2][r] +
-                        pd[0] * dv[0][r] + pd[1] * dv[1][r];
-    }
+    chain_rates_of(&ch, theta_dot, theta_ddot, &x);
+    combine_kinematics(&x, omega_fixed, omega_body, alpha_fixed, alpha_body);
 }
 
 /* chain_kinematics for body123 with every helper inlined, so that the compiler folds the
@@ -276,28 +314,20 @@ static inline void chain_quaternion(const chain *ch, const ak_sines *half, doubl
 
 void ak_general_quaternion(const ak_sequence *sequence, const double theta[3], double q[4]) {
     chain ch;
-    ak_sines half;
-    make_chain(sequence, theta, &ch);
-    ak_half_angle_sines(theta, &half);
+    ak_sines sines, half;
+    ak_angle_sines(theta, &sines);
+    chain_of_sines(sequence, &sines, &ch);
+    ak_half_angle_sines(&sines, &half);
     chain_quaternion(&ch, &half, q);
 }
 
 static inline void chain_partials(const chain *ch, const double theta_dot[3], double W_fixed[3][3],
                            double W_body[3][3], double W_fixed_dot[3][3],
                            double W_body_dot[3][3]) {
-    double u[3][3], v[3][3], du[3][3], dv[3][3], pd[3];
-    chain_axes(ch, u, v);
-    to_chain_order(ch, theta_dot, pd);
-    chain_axis_rates(ch, pd, du, dv);
-    for (int m = 0; m < 3; m++) {
-        const int col = ch->angle[m];
-        for (int r = 0; r < 3; r++) {
-            W_fixed[r][col] = u[m][r];
-            W_body[r][col] = v[m][r];
-            W_fixed_dot[r][col] = du[m][r];
-            W_body_dot[r][col] = dv[m][r];
-        }
-    }
+    const double no_acceleration[3] = {0.0, 0.0, 0.0};
+    chain_rates x;
+    chain_rates_of(ch, theta_dot, no_acceleration, &x);
+    store_partials(ch, &x, W_fixed, W_body, W_fixed_dot, W_body_dot);
 }
 
 void ak_general_partials(const ak_sequence *sequence, const double theta[3],
@@ -335,6 +365,57 @@ void ak_general_rotation_outputs(const ak_sequence *sequence, const ak_sines *si
         body123_rotation_outputs(sines, half, theta_dot, out);
     } else {
         chain_rotation_outputs(sequence, sines, half, theta_dot, out);
+    }
+}
+
+/* Every output from one chain: the sum of chain_kinematics and chain_rotation_outputs, with the
+ * axes and their rates computed once. */
+static inline void chain_all_outputs(const ak_sequence *sequence, const ak_sines *sines,
+                                     const ak_sines *half, const double theta_dot[3],
+                                     const double theta_ddot[3], double omega_fixed[3],
+                                     double omega_body[3], double alpha_fixed[3],
+                                     double alpha_body[3], double R[3][3], double q[4],
+                                     double W_fixed[3][3], double W_body[3][3],
+                                     double W_fixed_dot[3][3], double W_body_dot[3][3]) {
+    chain ch;
+    chain_rates x;
+    chain_of_sines(sequence, sines, &ch);
+    chain_rates_of(&ch, theta_dot, theta_ddot, &x);
+    combine_kinematics(&x, omega_fixed, omega_body, alpha_fixed, alpha_body);
+    store_partials(&ch, &x, W_fixed, W_body, W_fixed_dot, W_body_dot);
+    chain_rotation_matrix(&ch, R);
+    chain_quaternion(&ch, half, q);
+}
+
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
+static void body123_all_outputs(const ak_sines *sines, const ak_sines *half,
+                                const double theta_dot[3], const double theta_ddot[3],
+                                double omega_fixed[3], double omega_body[3],
+                                double alpha_fixed[3], double alpha_body[3], double R[3][3],
+                                double q[4], double W_fixed[3][3], double W_body[3][3],
+                                double W_fixed_dot[3][3], double W_body_dot[3][3]) {
+    chain_all_outputs(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], sines, half, theta_dot, theta_ddot,
+                      omega_fixed, omega_body, alpha_fixed, alpha_body, R, q, W_fixed, W_body,
+                      W_fixed_dot, W_body_dot);
+}
+
+void ak_general_all_outputs(const ak_sequence *sequence, const ak_sines *sines,
+                            const ak_sines *half, const double theta_dot[3],
+                            const double theta_ddot[3], double omega_fixed[3],
+                            double omega_body[3], double alpha_fixed[3], double alpha_body[3],
+                            double R[3][3], double q[4], double W_fixed[3][3],
+                            double W_body[3][3], double W_fixed_dot[3][3],
+                            double W_body_dot[3][3]) {
+    if (sequence == &AK_SEQUENCES[AK_SEQUENCE_DEFAULT]) {
+        body123_all_outputs(sines, half, theta_dot, theta_ddot, omega_fixed, omega_body,
+                            alpha_fixed, alpha_body, R, q, W_fixed, W_body, W_fixed_dot,
+                            W_body_dot);
+    } else {
+        chain_all_outputs(sequence, sines, half, theta_dot, theta_ddot, omega_fixed, omega_body,
+                          alpha_fixed, alpha_body, R, q, W_fixed, W_body, W_fixed_dot,
+                          W_body_dot);
     }
 }
 

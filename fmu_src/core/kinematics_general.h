@@ -93,10 +93,13 @@ typedef struct {
     double cos[3];
 } ak_sines;
 
-/* The only transcendental functions of the forward map: sin and cos of theta_k (section 1) and
- * of theta_k / 2 (section 5). Computed once, they serve every output below. */
+/* The only transcendental functions of the forward map: sin and cos of theta_k (section 1).
+ * Computed once, they serve every output below. */
 void ak_angle_sines(const double theta[3], ak_sines *sines);
-void ak_half_angle_sines(const double theta[3], ak_sines *half);
+/* sin and cos of the half angles (section 5) from sines = ak_angle_sines(theta), by a square root
+ * and a division each: of the half angle in [-pi/2, pi/2] (cos >= 0), which is theta_k / 2 or
+ * theta_k / 2 + pi, so q changes at most its sign, which section 5 fixes anyway. */
+void ak_half_angle_sines(const ak_sines *sines, ak_sines *half);
 
 /* Angular velocity and acceleration of B in both sets of components (section 2, 3). */
 void ak_general_angular_kinematics(const ak_sequence *sequence, const double theta[3],
@@ -122,6 +125,17 @@ typedef struct {
 void ak_general_rotation_outputs(const ak_sequence *sequence, const ak_sines *sines,
                                  const ak_sines *half, const double theta_dot[3],
                                  ak_rotation_outputs *out);
+
+/* Both of the above at once, from one chain: bit for bit what
+ * ak_general_angular_kinematics_of_sines and ak_general_rotation_outputs give, for little more
+ * than the cost of the first. */
+void ak_general_all_outputs(const ak_sequence *sequence, const ak_sines *sines,
+                            const ak_sines *half, const double theta_dot[3],
+                            const double theta_ddot[3], double omega_fixed[3],
+                            double omega_body[3], double alpha_fixed[3], double alpha_body[3],
+                            double R[3][3], double q[4], double W_fixed[3][3],
+                            double W_body[3][3], double W_fixed_dot[3][3],
+                            double W_body_dot[3][3]);
 
 /* Direction cosine matrix R (row-major, v_fixed = R v_body). */
 void ak_general_rotation_matrix(const ak_sequence *sequence, const double theta[3], double R[3][3]);

@@ -42,6 +42,13 @@ void ak_instance_reset(ak_instance *instance) {
         instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
         instance->real_role[vr] = (unsigned char)real_role(variable);
     }
+    for (int role = 0; role < AK_N_REAL_ROLES; role++) {
+        instance->roles_before[role][0] = 0;
+        for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
+            instance->roles_before[role][vr + 1] = (unsigned char)(instance->roles_before[role][vr] +
+                                                                   (instance->real_role[vr] == role));
+        }
+    }
     ak_instance_clear_input_derivatives(instance);
     if (AK_MODEL.initialize != NULL) {
         (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
@@ -70,10 +77,9 @@ void ak_instance_clear_input_derivatives(ak_instance *instance) {
     instance->data.any_input_derivative = false;
 }
 
-ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
-    if (!instance->outputs_stale) {
-        return instance->evaluation_status;
-    }
+/* Evaluates the main group, and the lazy group with it when with_lazy and the model can do both
+ * at once; returns the evaluation's status. */
+static ak_eval_status evaluate(ak_instance *instance, bool with_lazy) {
     /* Until fmi2ExitInitializationMode the states follow the parameters they start from. */
     if (AK_MODEL.initialize != NULL &&
         (instance->state & (AK_STATE_INSTANTIATED | AK_STATE_INITIALIZATION_MODE)) != 0 &&
@@ -82,19 +88,26 @@ ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
         instance->outputs_stale = false;
         return AK_EVAL_FAILED;
     }
-    instance->evaluation_status = AK_MODEL.evaluate(&instance->data);
+    const bool both = with_lazy && AK_MODEL.evaluate_all != NULL;
+    instance->evaluation_status =
+        both ? AK_MODEL.evaluate_all(&instance->data) : AK_MODEL.evaluate(&instance->data);
     instance->outputs_stale = false;
-    instance->lazy_stale = true;
+    instance->lazy_stale = !both || instance->evaluation_status == AK_EVAL_FAILED;
     instance->evaluations++;
     if (ak_log_on(instance, AK_LOG_CALLS)) {
-        ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu)",
-               instance->evaluations);
+        ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu%s)",
+               instance->evaluations, both ? ", with the lazy outputs" : "");
     }
     return instance->evaluation_status;
 }
 
+ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
+    return instance->outputs_stale ? evaluate(instance, false) : instance->evaluation_status;
+}
+
 ak_eval_status ak_instance_update_all_outputs(ak_instance *instance) {
-    const ak_eval_status status = ak_instance_update_outputs(instance);
+    const ak_eval_status status =
+        instance->outputs_stale ? evaluate(instance, true) : instance->evaluation_status;
     if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
         AK_MODEL.evaluate_lazy(&instance->data);
         instance->lazy_stale = false;

@@ -32,7 +32,8 @@ typedef enum {
     AK_REAL_INPUT,
     AK_REAL_PARAMETER,
     AK_REAL_MAIN_OUTPUT,
-    AK_REAL_LAZY_OUTPUT
+    AK_REAL_LAZY_OUTPUT,
+    AK_N_REAL_ROLES
 } ak_real_role;
 
 typedef struct ak_instance_s {
@@ -50,6 +51,10 @@ typedef struct ak_instance_s {
     /* The role of each value reference, from the model's variable table (ak_instance_reset):
      * the getter and setter read one byte per value instead of a variable's record. */
     unsigned char real_role[AK_MAX_VARIABLES];
+    /* roles_before[role][vr]: how many value references below vr have that role. A get of
+     * consecutive value references (what fmpy and most masters ask for) learns the roles of the
+     * whole run from two entries per role instead of a lookup per value. */
+    unsigned char roles_before[AK_N_REAL_ROLES][AK_MAX_VARIABLES + 1];
     /* Values by value reference, input derivatives and the logger, as the model sees them. */
     ak_model_data data;
     /* True when an input or parameter changed since the main output group was last computed;
@@ -70,6 +75,18 @@ typedef struct ak_instance_s {
 /* The role of a value reference in a Real get or set (AK_REAL_ABSENT for any out of range). */
 static inline ak_real_role ak_real_role_of(const ak_instance *instance, unsigned int vr) {
     return vr < AK_MAX_VARIABLES ? (ak_real_role)instance->real_role[vr] : AK_REAL_ABSENT;
+}
+
+/* The roles of the value references first .. first + n - 1 (first + n <= AK_MAX_VARIABLES), one
+ * bit (1 << role) per role present. */
+static inline unsigned int ak_real_roles_of_run(const ak_instance *instance, unsigned int first,
+                                                size_t n) {
+    unsigned int roles = 0;
+    for (int role = 0; role < AK_N_REAL_ROLES; role++) {
+        const unsigned char *before = instance->roles_before[role];
+        roles |= (unsigned int)(before[first + n] != before[first]) << role;
+    }
+    return roles;
 }
 
 /* Frees the FMU states the master did not free (fmi2FreeInstance). */

@@ -2,8 +2,11 @@
  * value, so a rejected call changes nothing. The variables are the model's (fmi2_model.h):
  * Real inputs, Real outputs, and parameters of variability fixed (Real or Integer), which can be
  * set only in Instantiated and InitializationMode. */
+#include <float.h>
 #include <math.h>
+#include <string.h>
 
+#include "ak_bytes.h"
 #include "fmi2Functions.h"
 #include "fmi2_derivatives.h"
 #include "fmi2_instance.h"
@@ -19,6 +22,21 @@ static bool arrays_given(const ak_instance *instance, ak_function function, size
         return false;
     }
     return true;
+}
+
+/* Every value reference a value array can hold, in order: vr[] is a run first, first + 1, ..
+ * exactly when it equals the slice of this table that starts at first (one memcmp). */
+static const fmi2ValueReference EVERY_VALUE_REFERENCE[AK_MAX_VARIABLES] = {
+    0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
+    20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39,
+    40, 41, 42, 43, 44, 45, 46, 47, 48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59,
+    60, 61, 62, 63, 64, 65, 66, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77, 78, 79};
+_Static_assert(AK_MAX_VARIABLES == 80, "EVERY_VALUE_REFERENCE lists them all");
+
+/* True when vr holds first, first + 1, .. (nvr >= 1) within the value array. */
+static bool ak_consecutive(const fmi2ValueReference vr[], size_t nvr) {
+    return nvr > 0 && (size_t)vr[0] + nvr <= AK_MAX_VARIABLES &&
+           memcmp(vr, &EVERY_VALUE_REFERENCE[vr[0]], nvr * sizeof vr[0]) == 0;
 }
 
 static const char *type_name(ak_type type) {
@@ -76,7 +94,7 @@ static void store(ak_instance *instance, ak_function function, bool trace, fmi2V
                variable != NULL ? variable->name : "?", value);
     }
     /* Only a real change makes the outputs stale: masters often set unchanged inputs. */
-    if (instance->data.values[vr] != value) {
+    if (!ak_same_double(instance->data.values[vr], value)) {
         instance->data.values[vr] = value;
         ak_instance_inputs_changed(instance);
     }
@@ -89,15 +107,20 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         !arrays_given(instance, AK_FMI2_GET_REAL, nvr, vr, value)) {
         return fmi2Error;
     }
-    /* The highest role read decides what must be brought up to date: nothing for inputs and
-     * parameters, the main group for its outputs, both groups for a lazy output. */
-    ak_real_role lowest = AK_REAL_LAZY_OUTPUT, highest = AK_REAL_INPUT;
-    for (size_t i = 0; i < nvr; i++) {
-        const ak_real_role role = ak_real_role_of(instance, vr[i]);
-        lowest = role < lowest ? role : lowest;
-        highest = role > highest ? role : highest;
+    /* One bit per role read: the highest decides what must be brought up to date (nothing for
+     * inputs and parameters, the main group for its outputs, both groups for a lazy output).
+     * Consecutive value references are the usual get: their roles come from the run's ends and
+     * their values from one copy. */
+    const bool run = ak_consecutive(vr, nvr);
+    unsigned int roles = 0;
+    if (run) {
+        roles = ak_real_roles_of_run(instance, vr[0], nvr);
+    } else {
+        for (size_t i = 0; i < nvr; i++) {
+            roles |= 1u << ak_real_role_of(instance, vr[i]);
+        }
     }
-    if (lowest == AK_REAL_ABSENT) { /* the first such value reference, and why */
+    if (roles & (1u << AK_REAL_ABSENT)) { /* the first such value reference, and why */
         size_t i = 0;
         while (ak_real_role_of(instance, vr[i]) != AK_REAL_ABSENT) {
             i++;
@@ -106,33 +129,44 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         return fmi2Error;
     }
     fmi2Status status = fmi2OK;
-    if (highest == AK_REAL_LAZY_OUTPUT) {
+    if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
         status = ak_instance_read_status(instance, ak_instance_update_all_outputs(instance));
-    } else if (highest == AK_REAL_MAIN_OUTPUT) {
+    } else if (roles & (1u << AK_REAL_MAIN_OUTPUT)) {
         status = ak_instance_read_status(instance, ak_instance_update_outputs(instance));
     }
-    for (size_t i = 0; i < nvr; i++) {
-        value[i] = instance->data.values[vr[i]];
+    if (run) {
+        memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
+    } else {
+        for (size_t i = 0; i < nvr; i++) {
+            value[i] = instance->data.values[vr[i]];
+        }
     }
     return status;
 }
 
-fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                       const fmi2Real value[]) {
-    ak_instance *instance = c;
-    if (!ak_call_allowed(instance, AK_FMI2_SET_REAL) ||
-        !arrays_given(instance, AK_FMI2_SET_REAL, nvr, vr, value)) {
-        return fmi2Error;
-    }
+/* The usual set: every value reference an input (value references 0 .. n_inputs - 1) and every
+ * value finite. Accumulated without a branch per value. */
+static bool only_finite_inputs(const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
+    const fmi2ValueReference n_inputs = (fmi2ValueReference)AK_MODEL.n_inputs;
+    bool ok = true;
     for (size_t i = 0; i < nvr; i++) {
-        /* The usual call first: a finite value for an input needs no other check. */
+        ok &= (vr[i] < n_inputs) & (fabs(value[i]) <= DBL_MAX);
+    }
+    return ok;
+}
+
+/* Each value of a set that is not the usual one, checked in turn: the first bad one is logged
+ * and refused. */
+static bool check_each_real(const ak_instance *instance, const fmi2ValueReference vr[],
+                            size_t nvr, const fmi2Real value[]) {
+    for (size_t i = 0; i < nvr; i++) {
         if (ak_real_role_of(instance, vr[i]) == AK_REAL_INPUT && isfinite(value[i])) {
             continue;
         }
         const ak_variable *variable =
             variable_of_type(instance, AK_FMI2_SET_REAL, vr[i], i, AK_TYPE_REAL);
         if (variable == NULL) {
-            return fmi2Error;
+            return false;
         }
         if (variable->causality == AK_CAUSALITY_OUTPUT ||
             variable->causality == AK_CAUSALITY_LOCAL) {
@@ -143,20 +177,47 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
                    ak_is_state(vr[i]) ? " and a continuous state (fmi2SetContinuousStates sets "
                                         "states in model exchange)"
                                       : "");
-            return fmi2Error;
+            return false;
         }
         if (!isfinite(value[i])) {
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
                    "fmi2SetReal: %s = %g (vr[%zu] = %u) is not finite; no value set",
                    variable->name, value[i], i, vr[i]);
-            return fmi2Error;
+            return false;
         }
         if (variable->causality == AK_CAUSALITY_PARAMETER &&
             !parameter_settable(instance, AK_FMI2_SET_REAL, i, variable, value[i])) {
-            return fmi2Error;
+            return false;
         }
     }
+    return true;
+}
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                       const fmi2Real value[]) {
+    ak_instance *instance = c;
+    if (!ak_call_allowed(instance, AK_FMI2_SET_REAL) ||
+        !arrays_given(instance, AK_FMI2_SET_REAL, nvr, vr, value)) {
+        return fmi2Error;
+    }
+    const bool usual = only_finite_inputs(vr, nvr, value);
+    if (!usual && !check_each_real(instance, vr, nvr, value)) {
+        return fmi2Error;
+    }
     const bool trace = ak_log_on(instance, AK_LOG_CALLS);
+    if (usual && !trace && !instance->data.any_input_derivative) {
+        /* Store every value; the outputs go stale only if one differs (masters often set
+         * unchanged inputs). */
+        bool changed = false;
+        for (size_t i = 0; i < nvr; i++) {
+            changed |= !ak_same_double(instance->data.values[vr[i]], value[i]);
+            instance->data.values[vr[i]] = value[i];
+        }
+        if (changed) {
+            ak_instance_inputs_changed(instance);
+        }
+        return fmi2OK;
+    }
     for (size_t i = 0; i < nvr; i++) {
         store(instance, AK_FMI2_SET_REAL, trace, vr[i], value[i]);
         if (instance->data.any_input_derivative && vr[i] < (fmi2ValueReference)AK_MODEL.n_inputs) {

@@ -38,23 +38,29 @@ void ak3_instance_reset(ak3_instance *instance) {
     instance->evaluations = 0;
 }
 
-ak_eval_status ak3_instance_update_outputs(ak3_instance *instance) {
-    if (!instance->outputs_stale) {
-        return instance->evaluation_status;
-    }
-    instance->evaluation_status = AK_MODEL.evaluate(&instance->data);
+/* Evaluates the main group, and the lazy group with it when with_lazy and the model can do both
+ * at once (as the FMI 2 layer). */
+static ak_eval_status evaluate(ak3_instance *instance, bool with_lazy) {
+    const bool both = with_lazy && AK_MODEL.evaluate_all != NULL;
+    instance->evaluation_status =
+        both ? AK_MODEL.evaluate_all(&instance->data) : AK_MODEL.evaluate(&instance->data);
     instance->outputs_stale = false;
-    instance->lazy_stale = true;
+    instance->lazy_stale = !both || instance->evaluation_status == AK_EVAL_FAILED;
     instance->evaluations++;
     if (ak3_log_on(instance, AK_LOG_CALLS)) {
-        ak3_log(instance, AK_LOG_CALLS, fmi3OK, "kinematics evaluated (evaluation %lu)",
-                instance->evaluations);
+        ak3_log(instance, AK_LOG_CALLS, fmi3OK, "kinematics evaluated (evaluation %lu%s)",
+                instance->evaluations, both ? ", with the lazy outputs" : "");
     }
     return instance->evaluation_status;
 }
 
+ak_eval_status ak3_instance_update_outputs(ak3_instance *instance) {
+    return instance->outputs_stale ? evaluate(instance, false) : instance->evaluation_status;
+}
+
 ak_eval_status ak3_instance_update_all_outputs(ak3_instance *instance) {
-    const ak_eval_status status = ak3_instance_update_outputs(instance);
+    const ak_eval_status status =
+        instance->outputs_stale ? evaluate(instance, true) : instance->evaluation_status;
     if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
         AK_MODEL.evaluate_lazy(&instance->data);
         instance->lazy_stale = false;

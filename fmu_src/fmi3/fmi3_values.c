@@ -4,8 +4,11 @@
  * changes nothing. Float64 holds the Real variables (and the independent variable time, which
  * can be read only); Int64 the Enumerations (FMI 3, section 2.4.7.1); no variable has another
  * type (fmi3_unsupported.c). */
+#include <float.h>
 #include <math.h>
+#include <string.h>
 
+#include "ak_bytes.h"
 #include "fmi3Functions.h"
 #include "fmi3_values.h"
 
@@ -118,7 +121,7 @@ static void store(ak3_instance *instance, ak3_function function, bool trace, uns
                 AK_MODEL.variables[vr].name, value);
     }
     /* Only a real change makes the outputs stale: importers often set unchanged inputs. */
-    if (instance->data.values[vr] != value) {
+    if (!ak_same_double(instance->data.values[vr], value)) {
         instance->data.values[vr] = value;
         ak3_instance_inputs_changed(instance);
     }
@@ -130,6 +133,84 @@ static bool arguments_given(const ak3_instance *instance, ak3_function function,
            ak3_given(instance, function, n_values, "nValues", values, "values");
 }
 
+/* The usual get of every communication point: arrays of outputs (their first value references),
+ * exactly nValues elements in all. Anything else takes the checked path. */
+static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values) {
+    size_t total = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        const ak3_array *array = ak3_array_of(vr[i]);
+        if (array == NULL || AK_MODEL.variables[vr[i]].causality != AK_CAUSALITY_OUTPUT) {
+            return false;
+        }
+        total += array->n_elements;
+    }
+    return total == n_values;
+}
+
+static bool any_lazy(const fmi3ValueReference vr[], size_t nvr) {
+    bool lazy = false;
+    for (size_t i = 0; i < nvr; i++) {
+        lazy |= AK_MODEL.variables[vr[i]].group == AK_GROUP_LAZY;
+    }
+    return lazy;
+}
+
+/* The elements of checked value references, array after array. */
+static void copy_out(const ak3_instance *instance, const fmi3ValueReference vr[], size_t nvr,
+                     fmi3Float64 values[]) {
+    size_t k = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
+            values[k++] = instance->time;
+            continue;
+        }
+        const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
+        memcpy(&values[k], &instance->data.values[vr[i]], n * sizeof values[0]);
+        k += n;
+    }
+}
+
+/* The usual set: arrays of inputs (value references 0 .. n_inputs - 1, each the first of its
+ * array), exactly nValues elements, all finite. Anything else takes the checked path. */
+static bool usual_set(const fmi3ValueReference vr[], size_t nvr, const fmi3Float64 values[],
+                      size_t n_values) {
+    size_t total = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        if (vr[i] >= (fmi3ValueReference)AK_MODEL.n_inputs || AK3_ARRAYS[vr[i]].first_vr != vr[i]) {
+            return false;
+        }
+        total += AK3_ARRAYS[vr[i]].n_elements;
+    }
+    if (total != n_values) {
+        return false; /* values[] holds nValues elements: read no further than it */
+    }
+    bool finite = true;
+    for (size_t k = 0; k < n_values; k++) {
+        finite &= fabs(values[k]) <= DBL_MAX;
+    }
+    return finite;
+}
+
+/* Stores checked values of checked value references. As the FMI 2 layer: every value is
+ * stored, and the outputs go stale only when one differs in any bit, so both layers evaluate the
+ * same bits. */
+static void store_all(ak3_instance *instance, const fmi3ValueReference vr[], size_t nvr,
+                      const fmi3Float64 values[]) {
+    bool changed = false;
+    size_t k = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        double *target = &instance->data.values[vr[i]];
+        const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
+        for (unsigned int e = 0; e < n; e++, k++) {
+            changed |= !ak_same_double(target[e], values[k]);
+            target[e] = values[k];
+        }
+    }
+    if (changed) {
+        ak3_instance_inputs_changed(instance);
+    }
+}
+
 fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t nValues) {
     ak3_instance *instance = c;
@@ -137,6 +218,13 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     if (!ak3_call_allowed(instance, self) ||
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
+    }
+    if (usual_get(vr, nvr, nValues)) {
+        const bool lazy = any_lazy(vr, nvr);
+        const fmi3Status status = ak3_read_status(lazy ? ak3_instance_update_all_outputs(instance)
+                                                       : ak3_instance_update_outputs(instance));
+        copy_out(instance, vr, nvr, values);
+        return status;
     }
     bool main = false, lazy = false;
     size_t total = 0;
@@ -164,17 +252,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         status = ak3_read_status(lazy ? ak3_instance_update_all_outputs(instance)
                                       : ak3_instance_update_outputs(instance));
     }
-    size_t k = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
-            values[k++] = instance->time;
-            continue;
-        }
-        const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
-        for (unsigned int e = 0; e < n; e++) {
-            values[k++] = instance->data.values[vr[i] + e];
-        }
-    }
+    copy_out(instance, vr, nvr, values);
     return status;
 }
 
@@ -185,6 +263,10 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     if (!ak3_call_allowed(instance, self) ||
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
+    }
+    if (usual_set(vr, nvr, values, nValues) && !ak3_log_on(instance, AK_LOG_CALLS)) {
+        store_all(instance, vr, nvr, values);
+        return fmi3OK;
     }
     size_t total = 0;
     for (size_t i = 0; i < nvr; i++) {
@@ -238,24 +320,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         }
         return fmi3OK;
     }
-    /* The hot path of every communication point. As store() (and the FMI 2 layer): only a value
-     * that compares different is written and makes the outputs stale, so -0.0 over 0.0 is not
-     * written and both layers evaluate the same bits. */
-    bool changed = false;
-    k = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        double *target = &instance->data.values[vr[i]];
-        const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
-        for (unsigned int e = 0; e < n; e++, k++) {
-            if (target[e] != values[k]) {
-                target[e] = values[k];
-                changed = true;
-            }
-        }
-    }
-    if (changed) {
-        ak3_instance_inputs_changed(instance);
-    }
+    store_all(instance, vr, nvr, values);
     return fmi3OK;
 }
 

@@ -95,6 +95,9 @@ typedef struct {
     /* Computes the lazy output group; NULL when there is none. Called only after evaluate
      * succeeded for the same inputs. */
     void (*evaluate_lazy)(ak_model_data *data);
+    /* Both groups at once, what evaluate then evaluate_lazy give, for less (a read of every
+     * output, which fmpy makes by default, pays one evaluation); NULL: the layer calls the two. */
+    ak_eval_status (*evaluate_all)(ak_model_data *data);
     /* NULL when the value is acceptable for the parameter, else why not (for the message). */
     const char *(*check_parameter)(const ak_variable *variable, double value);
 

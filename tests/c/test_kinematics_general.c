@@ -356,7 +356,7 @@ static void check_shared_sines(const ak_sequence *seq, const double theta[3], co
     const ak_sequence copy = *seq; /* another address: never the specialized path */
     ak_sines sines, half;
     ak_angle_sines(theta, &sines);
-    ak_half_angle_sines(theta, &half);
+    ak_half_angle_sines(&sines, &half);
 
     double shared[12], own[12], generic[12];
     ak_general_angular_kinematics_of_sines(seq, &sines, td, tdd, shared, shared + 3, shared + 6,
@@ -379,6 +379,29 @@ static void check_shared_sines(const ak_sequence *seq, const double theta[3], co
           memcmp(&all, &one, sizeof one) == 0);
     check(seq->name, "R, q, W, W_dot of the table entry and of a copy bit-identical",
           memcmp(&all, &all_generic, sizeof all) == 0);
+}
+
+/* ak_half_angle_sines: sin and cos of the half angle in [-pi/2, pi/2] (theta / 2, or theta / 2 +
+ * pi, which is the same q up to sign) from the angle's sines, within 2 ulp of 1 of libm's sin and
+ * cos of that half angle; at and around 0, +-pi/2, +-pi and for large angles. */
+static double worst_half_angle_difference = 0.0;
+
+static void check_half_angles(double x) {
+    const double theta[3] = {x, -x, 0.5 * x};
+    ak_sines sines, half;
+    ak_angle_sines(theta, &sines);
+    ak_half_angle_sines(&sines, &half);
+    for (int k = 0; k < 3; k++) {
+        /* The half angle in [-pi/2, pi/2] of the angle libm's sin and cos describe. */
+        const double h = 0.5 * atan2(sines.sin[k], sines.cos[k]);
+        const double s = sin(h), c = cos(h);
+        const double d = fmax(fabs(half.sin[k] - s), fabs(half.cos[k] - c));
+        worst_half_angle_difference = fmax(worst_half_angle_difference, d);
+        check("half angles", "ak_half_angle_sines = sin, cos of the half angle", d <= 4.5e-16);
+        check("half angles", "cos of the half angle >= 0", half.cos[k] >= 0.0);
+        check("half angles", "sin^2 + cos^2 = 1",
+              fabs(half.sin[k] * half.sin[k] + half.cos[k] * half.cos[k] - 1.0) <= 4.5e-16);
+    }
 }
 
 int main(void) {
@@ -419,6 +442,21 @@ int main(void) {
     }
     printf("body123 general vs ak_angular_kinematics_123, 2000 states: worst scaled difference %.2e\n",
            worst_body123_difference);
+    const double special[] = {0.0, 1e-300, 1e-8, 1.5707963267948966, 3.141592653589793,
+                              3.1415926535897927, 3.141592653589794, 4.71238898038469,
+                              6.283185307179586, 100.0, 12345.678};
+    for (size_t i = 0; i < sizeof special / sizeof special[0]; i++) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            check_half_angles(sign * special[i]);
+            check_half_angles(sign * nextafter(special[i], 10.0));
+            check_half_angles(sign * nextafter(special[i], -10.0));
+        }
+    }
+    for (int n = 0; n < 20000; n++) {
+        check_half_angles(random_in(-20.0, 20.0));
+    }
+    printf("half angles from the angles' sines, 20066 x 3 angles: worst difference %.2e\n",
+           worst_half_angle_difference);
     printf("%d checks, %d failures\n", checks, failures);
     return failures == 0 ? 0 : 1;
 }

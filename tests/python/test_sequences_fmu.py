@@ -222,3 +222,25 @@ def test_rotation_outputs_are_computed_only_when_read(make_instance):
     instance.get(OUTPUTS[:12])
     assert lazy() == 1
     assert instance.get(["W_fixed_dot[1,1]"]) is not None and lazy() == 2
+
+
+def test_every_output_at_once_after_an_input_change(make_instance):
+    """A read of a lazy output right after an input changed evaluates both groups in one pass
+    (one evaluation, no separate lazy one); the values are bit for bit those of the two-step
+    path (main group read first, then the lazy group), for every sequence."""
+    rng = np.random.default_rng(RNG_SEED)
+    for name in SEQUENCES:
+        two_steps = instance_for(make_instance, name)
+        one_pass = instance_for(make_instance, name, logging_on=True)  # last: gets the messages
+        for inputs in states(name, 6, rng):
+            for instance in (one_pass, two_steps):
+                instance.set(dict(zip(INPUTS, inputs)))
+            before = len(one_pass.messages)
+            got = np.array(one_pass.get(OUTPUTS[12:] + OUTPUTS[:12]))
+            new = [m for _, _, m in one_pass.messages[before:]]
+            assert sum("with the lazy outputs" in m for m in new) == 1, new
+            assert not any(m == "lazy outputs evaluated" for m in new), new
+            main = np.array(two_steps.get(OUTPUTS[:12]))
+            lazy = np.array(two_steps.get(OUTPUTS[12:]))
+            expected = np.concatenate([lazy, main])
+            assert np.array_equal(got.view(np.int64), expected.view(np.int64)), name

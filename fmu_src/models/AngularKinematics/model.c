@@ -32,29 +32,42 @@ static ak_eval_status evaluate(ak_model_data *data) {
     return AK_EVAL_OK;
 }
 
-static void store_matrix(double *out, double M[3][3]) {
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            out[3 * i + j] = M[i][j];
-        }
-    }
-}
+/* The lazy outputs R, q, W_fixed, W_body, W_fixed_dot, W_body_dot hold consecutive value
+ * references in the order of ak_rotation_outputs (checked here), so they are stored in one copy. */
+_Static_assert(AK_VR_Q == AK_VR_R + 9 && AK_VR_W_FIXED == AK_VR_Q + 4 &&
+                   AK_VR_W_BODY == AK_VR_W_FIXED + 9 && AK_VR_W_FIXED_DOT == AK_VR_W_BODY + 9 &&
+                   AK_VR_W_BODY_DOT == AK_VR_W_FIXED_DOT + 9,
+               "the lazy outputs follow ak_rotation_outputs");
+_Static_assert(sizeof(ak_rotation_outputs) == 49 * sizeof(double), "no padding");
 
 static void evaluate_lazy(ak_model_data *data) {
     double *v = data->values;
     ak_sines sines, half;
     memcpy(&sines, data->work, sizeof sines);
-    ak_half_angle_sines(&v[AK_VR_THETA], &half);
+    ak_half_angle_sines(&sines, &half);
     ak_rotation_outputs out;
     ak_general_rotation_outputs(sequence_of(data), &sines, &half, &v[AK_VR_THETA_DOT], &out);
-    store_matrix(&v[AK_VR_R], out.R);
-    for (int k = 0; k < 4; k++) {
-        v[AK_VR_Q + k] = out.q[k];
-    }
-    store_matrix(&v[AK_VR_W_FIXED], out.W_fixed);
-    store_matrix(&v[AK_VR_W_BODY], out.W_body);
-    store_matrix(&v[AK_VR_W_FIXED_DOT], out.W_fixed_dot);
-    store_matrix(&v[AK_VR_W_BODY_DOT], out.W_body_dot);
+    memcpy(&v[AK_VR_R], &out, sizeof out);
+}
+
+/* A 3x3 output, row-major at value reference vr, as the matrix the core writes. */
+static double (*matrix_at(double *v, unsigned int vr))[3] {
+    return (double (*)[3])&v[vr];
+}
+
+/* A read of lazy outputs after an input changed: every output from one chain, written in place. */
+static ak_eval_status evaluate_all(ak_model_data *data) {
+    double *v = data->values;
+    ak_sines sines, half;
+    ak_angle_sines(&v[AK_VR_THETA], &sines);
+    memcpy(data->work, &sines, sizeof sines);
+    ak_half_angle_sines(&sines, &half);
+    ak_general_all_outputs(sequence_of(data), &sines, &half, &v[AK_VR_THETA_DOT],
+                           &v[AK_VR_THETA_DDOT], &v[AK_VR_OMEGA_FIXED], &v[AK_VR_OMEGA_BODY],
+                           &v[AK_VR_ALPHA_FIXED], &v[AK_VR_ALPHA_BODY], matrix_at(v, AK_VR_R),
+                           &v[AK_VR_Q], matrix_at(v, AK_VR_W_FIXED), matrix_at(v, AK_VR_W_BODY),
+                           matrix_at(v, AK_VR_W_FIXED_DOT), matrix_at(v, AK_VR_W_BODY_DOT));
+    return AK_EVAL_OK;
 }
 
 static const char *check_parameter(const ak_variable *variable, double value) {
@@ -123,6 +136,7 @@ const ak_model AK_MODEL = {
     .n_inputs = AK_N_INPUTS,
     .evaluate = evaluate,
     .evaluate_lazy = evaluate_lazy,
+    .evaluate_all = evaluate_all,
     .check_parameter = check_parameter,
     .jacobian = jacobian,
     .output_derivatives = output_derivatives,
