@@ -33,6 +33,9 @@ typedef struct {
     bool with_setup;
     ak_op_id setup_op;
     ak_args setup_args;
+    /* The status `message` is logged with when it is not the status the call returns
+     * (fmi2OK: it is that status). */
+    fmi2Status message_status;
     /* A second message the bad call logs after `message` (NULL: only one), and its status. */
     const char *message2;
     fmi2Status status2;

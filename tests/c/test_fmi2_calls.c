@@ -96,10 +96,28 @@ static void check_still_usable(fmi2Component c, unsigned int state, const char *
     }
 }
 
+/* The text with each '|' escaped ("\\|"), so that it stays inside its cell of a markdown table. */
+static void print_cell_text(const char *text) {
+    for (; *text != '\0'; text++) {
+        if (*text == '|') {
+            putchar('\\');
+        }
+        putchar(*text);
+    }
+}
+
 static void print_row(const char *state, const char *call, const char *status,
                       const char *message) {
-    printf("| %s | `%s` | %s | %s%s%s |\n", state, call, status, message ? "`" : "",
-           message ? message : "(nothing logged)", message ? "`" : "");
+    printf("| %s | `", state);
+    print_cell_text(call);
+    printf("` | %s | ", status);
+    if (message != NULL) {
+        putchar('`');
+        print_cell_text(message);
+        printf("` |\n");
+    } else {
+        printf("(nothing logged) |\n");
+    }
 }
 
 /* A row's call or message with its placeholders (fmi2_bad_input_table.h) replaced by the numbers
@@ -171,7 +189,8 @@ static void run_bad_call(const ak_bad_call *bad, size_t row, bool print_table) {
         printf("     returned %s, expected %s\n", ak_status_name(status),
                ak_status_name(bad->status));
     }
-    const fmi2Status statuses[2] = {status, bad->status2};
+    const fmi2Status statuses[2] = {bad->message_status != fmi2OK ? bad->message_status : status,
+                                    bad->status2};
     const char *const texts[2] = {expected, expected2};
     check_messages(&recorder, context, bad->message == NULL ? 0 : bad->message2 == NULL ? 1 : 2,
                    statuses, texts, "bad-input");
@@ -181,7 +200,17 @@ static void run_bad_call(const ak_bad_call *bad, size_t row, bool print_table) {
                                      : ak_snapshot_unchanged(&before, c),
           context, "the rejected call changed the instance");
     const ak_recorder logged = recorder;
-    check_still_usable(c, bad->in, context);
+    /* A step answered with fmi2Discard was not taken: the instance is in StepFailed, at the
+     * time it was before. */
+    const bool step_discarded = bad->op == AK_OP_DO_STEP && status == fmi2Discard;
+    if (step_discarded) {
+        fmi2Real last = -1.0;
+        check(((const ak_instance *)c)->state == AK_STATE_STEP_FAILED &&
+                  fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &last) == fmi2OK &&
+                  last == before.copy.time,
+              context, "the discarded step did not leave the instance in StepFailed at its time");
+    }
+    check_still_usable(c, step_discarded ? AK_IN_STEP_FAILED : bad->in, context);
     if (state != NULL) {
         check(fmi2FreeFMUstate(c, &state) == fmi2OK, context, "fmi2FreeFMUstate failed");
     }
