@@ -1,10 +1,13 @@
 # The abuse tests (docs/abuse_testing.md): C programs that link an FMU's own sources and play the
 # master, one set per model. Built in every Linux build folder; instrumented when AK_SANITIZE is
 # set (cmake/sanitizers.cmake). The AngularKinematics programs keep the plain names
-# (build/test_fmi2_calls ...), the EulerRates ones end in _EulerRates.
+# (build/test_fmi2_calls ...), the others end in _<Model> (build/test_fmi2_calls_EulerRates).
 find_package(Threads REQUIRED)
 
+# ak_add_abuse_tests(<model> <rows file> [CALLS_ONLY]): CALLS_ONLY builds the call driver
+# test_fmi2_calls (its bad-input table) and not the many-instance, soak and fuzz programs.
 function(ak_add_abuse_tests model rows_source)
+  cmake_parse_arguments(_ARG "CALLS_ONLY" "" "" ${ARGN})
   if(model STREQUAL "AngularKinematics")
     set(_suffix "")
   else()
@@ -27,6 +30,10 @@ function(ak_add_abuse_tests model rows_source)
     tests/c/fmi2_bad_input_table.c
     tests/c/${rows_source})
   target_compile_options(ak_test_master_${model} PRIVATE ${AK_WARNINGS})
+  # The rows of the bad-input tables list the fields every row has, in order, and leave the
+  # optional ones (fmi2_bad_input_table.h: setup call, second message, ...) zero.
+  set_source_files_properties(tests/c/fmi2_bad_input_table.c tests/c/${rows_source}
+                              PROPERTIES COMPILE_OPTIONS -Wno-missing-field-initializers)
   target_link_libraries(ak_test_master_${model} PUBLIC ak_fmu_for_tests_${model}
                                                       kinematics_123_reference)
 
@@ -35,7 +42,11 @@ function(ak_add_abuse_tests model rows_source)
     target_compile_options(test_fmi2_calls${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(test_fmi2_calls${_suffix} PRIVATE ak_test_master_${model})
     add_test(NAME fmi2_calls_${model} COMMAND test_fmi2_calls${_suffix})
-
+  endif()
+  if(_ARG_CALLS_ONLY)
+    return()
+  endif()
+  if(NOT AK_FUZZ)
     add_executable(test_fmi2_instances${_suffix} tests/c/test_fmi2_instances.c)
     target_compile_options(test_fmi2_instances${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(test_fmi2_instances${_suffix} PRIVATE ak_test_master_${model}
@@ -57,15 +68,11 @@ endfunction()
 ak_add_abuse_tests(AngularKinematics fmi2_bad_input_angular_kinematics.c)
 ak_add_abuse_tests(EulerRates fmi2_bad_input_euler_rates.c)
 
-# AttitudePropagator (the first model with continuous states, 6 inputs): its own abuse program
-# until the shared harness above covers it (tests/c/abuse_attitude.c: many instances in threads,
-# random calls with bad arguments in both interfaces, every allocation freed).
-add_library(ak_fmu_for_tests_AttitudePropagator STATIC ${AK_MODEL_COMMON_SOURCES}
-            ${AK_MODEL_SOURCES_AttitudePropagator} ${AK_FMI2_SOURCES})
-target_include_directories(ak_fmu_for_tests_AttitudePropagator PUBLIC ${AK_INCLUDE_DIRS}
-                           fmu_src/models/AttitudePropagator "${FMI2_HEADERS_DIR}")
-target_compile_options(ak_fmu_for_tests_AttitudePropagator PRIVATE ${AK_WARNINGS})
-target_link_libraries(ak_fmu_for_tests_AttitudePropagator PUBLIC kinematics_core)
+# AttitudePropagator (the first model with continuous states, 6 inputs): the call driver and its
+# bad-input table like the others; for many instances in threads and random calls with bad
+# arguments in both interfaces, its own abuse program (tests/c/abuse_attitude.c) until the
+# many-instance, soak and fuzz programs above cover it.
+ak_add_abuse_tests(AttitudePropagator fmi2_bad_input_attitude_propagator.c CALLS_ONLY)
 if(NOT AK_FUZZ)
   add_executable(abuse_attitude tests/c/abuse_attitude.c)
   target_compile_options(abuse_attitude PRIVATE ${AK_WARNINGS})

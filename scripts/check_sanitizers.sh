@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs the C tests of the FMI layers (test_fmi2_calls, test_fmi2_instances, soak_fmi2, each built
-# for both models: AngularKinematics, and EulerRates with the suffix _EulerRates; fmi3_abuse_<Model>
+# for AngularKinematics, and EulerRates with the suffix _EulerRates; test_fmi2_calls_AttitudePropagator
+# and abuse_attitude for AttitudePropagator; fmi3_abuse_<Model>
 # for the FMI 3 layer; and the core's test_kinematics) under AddressSanitizer + UndefinedBehaviorSanitizer, ThreadSanitizer and
 # valgrind memcheck, and the pytest suite through fmpy with both FMUs built with ASan+UBSan. Any
 # report fails the run. docs/abuse_testing.md explains what each proves.
@@ -45,13 +46,14 @@ export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
 
 programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRates
   test_fmi2_instances_EulerRates soak_fmi2_EulerRates fmi3_abuse_AngularKinematics
-  fmi3_abuse_EulerRates"
+  fmi3_abuse_EulerRates test_fmi2_calls_AttitudePropagator"
 echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
 # shellcheck disable=SC2086
 configure_and_build asan $programs test_kinematics test_attitude abuse_attitude
 run asan+ubsan build-asan/test_kinematics
 run asan+ubsan build-asan/test_attitude
 run asan+ubsan build-asan/abuse_attitude 4 50 "$steps" "$soak"
+run asan+ubsan build-asan/test_fmi2_calls_AttitudePropagator
 for suffix in "" _EulerRates; do
   run asan+ubsan "build-asan/test_fmi2_calls$suffix"
   run asan+ubsan "build-asan/test_fmi2_instances$suffix" 1000 4 "$steps"
@@ -115,6 +117,7 @@ memcheck() { # program, arguments...: valgrind's summary printed, any error or l
 }
 memcheck build/test_kinematics
 memcheck build/abuse_attitude 4 20 "$valgrind_steps" "$valgrind_soak"
+memcheck build/test_fmi2_calls_AttitudePropagator
 for suffix in "" _EulerRates; do
   memcheck "build/test_fmi2_calls$suffix"
   memcheck "build/test_fmi2_instances$suffix" 1000 4 "$valgrind_steps"

@@ -1,15 +1,20 @@
 /* A minimal FMI 2.0 co-simulation master of our own, used to prove the Windows binary: built
- * natively and with mingw-w64, it loads an AngularKinematics binary (dlopen or LoadLibrary), drives
- * it through a fixed sequence of inputs, and prints every output with 17 significant digits. The
+ * natively and with mingw-w64, it loads a model's binary (dlopen or LoadLibrary), drives it
+ * through a fixed sequence of inputs, and prints every output with 17 significant digits. The
  * Linux build's printout and the Windows build's printout under wine are then compared. It drives
- * either model: both have 9 Real inputs at value references 0..8 and 12 Real outputs at 9..20
- * (AngularKinematics' omega and alpha; EulerRates' theta_dot, theta_ddot, alpha).
+ * any model of the project: the inputs (value references 0 to n_inputs - 1, models/model.h) and
+ * the outputs (every variable of causality output, in value-reference order) come from the
+ * model's generated variable table, which this program is linked with (only the table: the model
+ * itself is in the library it loads). A model with continuous states (AttitudePropagator)
+ * integrates them in its co-simulation steps; the driver sees only inputs and outputs.
  *
  * The inputs are exact binary fractions computed without libm, so that both runs feed the FMU
  * bit-identical values and any difference comes from the two binaries alone.
  *
- * Usage: fmu_driver LIBRARY [STEPS [MODEL]]   MODEL: AngularKinematics (default) or EulerRates;
- * exit status 0 when every call returned fmi2OK. */
+ * Output: "fmi2GetVersion 2.0", "outputs NAME...", then per step "k y1 y2 ...".
+ *
+ * Usage: fmu_driver LIBRARY [STEPS [MODEL]]   MODEL: AngularKinematics (default), EulerRates,
+ * AttitudePropagator; exit status 0 when every call returned fmi2OK. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +22,7 @@
 
 #include "fmi2FunctionTypes.h"
 #include "AngularKinematics_variables.h"
+#include "AttitudePropagator_variables.h"
 #include "EulerRates_variables.h"
 
 #ifdef _WIN32
@@ -26,6 +32,21 @@
 #endif
 
 typedef void (*generic_function)(void);
+
+/* What the driver knows of a model: its GUID and its generated variable table. */
+typedef struct {
+    const char *name;
+    const char *guid;
+    const ak_variable *variables; /* indexed by value reference; name NULL: a hole */
+    int n_value_references;
+    int n_inputs;
+} driven_model;
+
+static const driven_model MODELS[] = {
+    {"AngularKinematics", AK_GUID, AK_VARIABLES, AK_N_VALUE_REFERENCES, AK_N_INPUTS},
+    {"EulerRates", ER_GUID, ER_VARIABLES, ER_N_VALUE_REFERENCES, ER_N_INPUTS},
+    {"AttitudePropagator", AP_GUID, AP_VARIABLES, AP_N_VALUE_REFERENCES, AP_N_INPUTS},
+};
 
 typedef struct {
     fmi2GetVersionTYPE *get_version;
@@ -102,8 +123,9 @@ static void logger(fmi2ComponentEnvironment environment, fmi2String instance, fm
 static void *allocate(size_t count, size_t size) { return calloc(count, size); }
 
 /* Input j at step k: an exact multiple of 1/64 between -2.5 and +2.5 (rad, rad/s, rad/s2); every
- * 17th step puts theta[2] at gimbal lock (+-pi/2 rounded to a double, the same on both sides), or
- * for EulerRates, whose inverse map is undefined there, at +-1.5 (near it). */
+ * 17th step puts input 1 at +-pi/2 rounded to a double (the same on both sides): AngularKinematics'
+ * theta[2] at gimbal lock; for EulerRates, whose inverse map is undefined there, +-1.5 (near it);
+ * AttitudePropagator's omega[2], a rate like any other. */
 static double input_value(int k, int j, int inverse) {
     if (j == 1 && k % 17 == 0) {
         return (k % 34 == 0 ? 1.0 : -1.0) * (inverse ? 1.5 : 1.5707963267948966);
@@ -113,12 +135,23 @@ static double input_value(int k, int j, int inverse) {
 
 int main(int argc, char **argv) {
     if (argc < 2) {
-        fprintf(stderr, "usage: %s LIBRARY [STEPS [AngularKinematics|EulerRates]]\n", argv[0]);
+        fprintf(stderr, "usage: %s LIBRARY [STEPS [AngularKinematics|EulerRates|AttitudePropagator]]\n",
+                argv[0]);
         return 2;
     }
     const int steps = argc > 2 ? atoi(argv[2]) : 200;
-    const int inverse = argc > 3 && strcmp(argv[3], "EulerRates") == 0;
-    const char *guid = inverse ? ER_GUID : AK_GUID;
+    const driven_model *model = NULL;
+    for (size_t m = 0; m < sizeof MODELS / sizeof MODELS[0]; m++) {
+        if (strcmp(argc > 3 ? argv[3] : "AngularKinematics", MODELS[m].name) == 0) {
+            model = &MODELS[m];
+        }
+    }
+    if (model == NULL) {
+        fprintf(stderr, "fmu_driver: no model %s\n", argv[3]);
+        return 2;
+    }
+    const int inverse = strcmp(model->name, "EulerRates") == 0;
+    const char *guid = model->guid;
     void *library = open_library(argv[1]);
     if (library == NULL) {
         fprintf(stderr, "fmu_driver: cannot load %s\n", argv[1]);
@@ -142,26 +175,34 @@ int main(int argc, char **argv) {
                  api.enter_initialization_mode(instance) != fmi2OK ||
                  api.exit_initialization_mode(instance) != fmi2OK;
 
-    fmi2ValueReference inputs[AK_N_INPUTS], outputs[AK_VR_R - AK_N_INPUTS];
-    for (int i = 0; i < AK_VR_R; i++) {
-        if (i < AK_N_INPUTS) {
-            inputs[i] = (fmi2ValueReference)i;
-        } else {
-            outputs[i - AK_N_INPUTS] = (fmi2ValueReference)i;
+    fmi2ValueReference inputs[AK_MAX_INPUTS], outputs[AK_MAX_VARIABLES];
+    const size_t n_inputs = (size_t)model->n_inputs;
+    size_t n_outputs = 0;
+    for (int vr = 0; vr < model->n_value_references; vr++) {
+        if (vr < model->n_inputs) {
+            inputs[vr] = (fmi2ValueReference)vr;
+        } else if (model->variables[vr].name != NULL &&
+                   model->variables[vr].causality == AK_CAUSALITY_OUTPUT) {
+            outputs[n_outputs++] = (fmi2ValueReference)vr;
         }
     }
+    printf("outputs");
+    for (size_t j = 0; j < n_outputs; j++) {
+        printf(" %s", model->variables[outputs[j]].name);
+    }
+    printf("\n");
     for (int k = 0; k < steps && !failed; k++) {
-        double u[AK_N_INPUTS], y[AK_VR_R - AK_N_INPUTS];
-        for (int j = 0; j < AK_N_INPUTS; j++) {
-            u[j] = input_value(k, j, inverse);
+        double u[AK_MAX_INPUTS], y[AK_MAX_VARIABLES];
+        for (size_t j = 0; j < n_inputs; j++) {
+            u[j] = input_value(k, (int)j, inverse);
         }
-        failed = api.set_real(instance, inputs, AK_N_INPUTS, u) != fmi2OK ||
-                 api.get_real(instance, outputs, AK_VR_R - AK_N_INPUTS, y) != fmi2OK;
+        failed = api.set_real(instance, inputs, n_inputs, u) != fmi2OK ||
+                 api.get_real(instance, outputs, n_outputs, y) != fmi2OK;
         if (failed) {
             break;
         }
         printf("%d", k);
-        for (int j = 0; j < AK_VR_R - AK_N_INPUTS; j++) {
+        for (size_t j = 0; j < n_outputs; j++) {
             printf(" %.17g", y[j]);
         }
         printf("\n");

@@ -171,9 +171,11 @@ static bool check_each_real(const ak_instance *instance, const fmi2ValueReferenc
         if (variable->causality == AK_CAUSALITY_OUTPUT ||
             variable->causality == AK_CAUSALITY_LOCAL) {
             ak_log(instance, AK_LOG_ERROR, fmi2Error,
-                   "fmi2SetReal: vr[%zu] = %u is %s, an %s%s: only inputs and parameters can be "
+                   "fmi2SetReal: vr[%zu] = %u is %s, %s %s%s: only inputs and parameters can be "
                    "set; no value set",
-                   i, vr[i], variable->name, ak_causality_name(variable->causality),
+                   i, vr[i], variable->name,
+                   variable->causality == AK_CAUSALITY_OUTPUT ? "an" : "a",
+                   ak_causality_name(variable->causality),
                    ak_is_state(vr[i]) ? " and a continuous state (fmi2SetContinuousStates sets "
                                         "states in model exchange)"
                                       : "");

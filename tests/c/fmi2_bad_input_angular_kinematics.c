@@ -5,6 +5,7 @@
 
 #include "fmi2_bad_input_table.h"
 #include "AngularKinematics_variables.h"
+#include "fmi2_test_instance.h"
 
 enum {
     INSTANTIATED = AK_IN_INSTANTIATED,
@@ -13,6 +14,9 @@ enum {
     TERMINATED = AK_IN_TERMINATED,
     EVENT_MODE = AK_ME | AK_IN_EVENT_MODE
 };
+
+/* No step of AngularKinematics can fail: its outputs are defined for every finite input. */
+const ak_test_failing_step AK_TEST_FAILING_STEP = {0, {0}, {0}};
 
 const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- values ------------------------------------------------------------------------------ */

@@ -6,6 +6,7 @@
 
 #include "fmi2_bad_input_table.h"
 #include "EulerRates_variables.h"
+#include "fmi2_test_instance.h"
 
 enum {
     INSTANTIATED = AK_IN_INSTANTIATED,
@@ -15,6 +16,9 @@ enum {
     TERMINATED = AK_IN_TERMINATED,
     EVENT_MODE = AK_ME | AK_IN_EVENT_MODE
 };
+
+/* A step fails at the singular configuration: theta[2] = pi/2 for the default sequence body123. */
+const ak_test_failing_step AK_TEST_FAILING_STEP = {1, {ER_VR_THETA + 1}, {AK_TEST_SINGULAR_THETA2}};
 
 const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- values ------------------------------------------------------------------------------ */

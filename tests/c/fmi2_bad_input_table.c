@@ -184,7 +184,8 @@ const ak_bad_call AK_BAD_CALLS[] = {
     {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, bytes, 8, NULL)", AK_OP_DE_SERIALIZE_FMU_STATE,
      {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error, "fmi2DeSerializeFMUstate: FMUstate is NULL", false},
 
-    /* --- model exchange (an instance created with fmi2ModelExchange) --------------------------- */
+    /* --- model exchange (an instance created with fmi2ModelExchange); the rows marked
+     * without_states_only hold for a model without continuous states ------------------------ */
     {EVENT_MODE, "fmi2NewDiscreteStates(c, NULL)", AK_OP_NEW_DISCRETE_STATES, {0}, fmi2Error, "fmi2NewDiscreteStates: eventInfo is NULL", false},
     {CONTINUOUS_TIME_MODE, "fmi2CompletedIntegratorStep(c, fmi2True, NULL, &terminate)",
      AK_OP_COMPLETED_INTEGRATOR_STEP, {.flag = {fmi2True}, .out2 = (fmi2Boolean[1]){0}},
@@ -198,23 +199,23 @@ const ak_bad_call AK_BAD_CALLS[] = {
     {CONTINUOUS_TIME_MODE, "fmi2SetContinuousStates(c, {1}, 1)", AK_OP_SET_CONTINUOUS_STATES,
      {.nvr = 1, .values2 = (fmi2Real[]){1.0}}, fmi2Error,
      "fmi2SetContinuousStates: nx = 1, but this FMU has no continuous "
-     "states and no event indicators (nx must be 0)", false},
+     "states and no event indicators (nx must be 0)", false, .without_states_only = true},
     {CONTINUOUS_TIME_MODE, "fmi2GetDerivatives(c, dx, 1)", AK_OP_GET_DERIVATIVES,
      {.nvr = 1, .values2 = (fmi2Real[1]){0}}, fmi2Error,
      "fmi2GetDerivatives: nx = 1, but this FMU has no continuous states and "
-     "no event indicators (nx must be 0)", false},
+     "no event indicators (nx must be 0)", false, .without_states_only = true},
     {EVENT_MODE, "fmi2GetEventIndicators(c, z, 3)", AK_OP_GET_EVENT_INDICATORS,
      {.nvr = 3, .values2 = (fmi2Real[3]){0}}, fmi2Error,
      "fmi2GetEventIndicators: ni = 3, but this FMU has no continuous states "
-     "and no event indicators (ni must be 0)", false},
+     "and no event indicators (ni must be 0)", false, .without_states_only = true},
     {ME_TERMINATED, "fmi2GetContinuousStates(c, x, 1)", AK_OP_GET_CONTINUOUS_STATES,
      {.nvr = 1, .values2 = (fmi2Real[1]){0}}, fmi2Error,
      "fmi2GetContinuousStates: nx = 1, but this FMU has no continuous "
-     "states and no event indicators (nx must be 0)", false},
+     "states and no event indicators (nx must be 0)", false, .without_states_only = true},
     {ME_INSTANTIATED, "fmi2GetNominalsOfContinuousStates(c, x, 2)",
      AK_OP_GET_NOMINALS_OF_CONTINUOUS_STATES, {.nvr = 2, .values2 = (fmi2Real[2]){0}}, fmi2Error,
      "fmi2GetNominalsOfContinuousStates: nx = 2, but this FMU has no continuous states and "
-     "no event indicators (nx must be 0)", false},
+     "no event indicators (nx must be 0)", false, .without_states_only = true},
     {CONTINUOUS_TIME_MODE, "fmi2EnterContinuousTimeMode(c)", AK_OP_ENTER_CONTINUOUS_TIME_MODE,
      {0}, fmi2Error,
      "fmi2EnterContinuousTimeMode: illegal call in state ContinuousTimeMode", false},

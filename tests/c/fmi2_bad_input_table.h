@@ -25,6 +25,20 @@ typedef struct {
     /* The driver first takes an FMU state of the instance (fmi2GetFMUstate) and passes it as
      * args.state; it frees it after the call. */
     bool with_fmu_state;
+    /* Rows of the common table that hold for a model without continuous states only (the
+     * driver leaves them out for a model with states, whose own table has their kind). */
+    bool without_states_only;
+    /* A legal call made on the instance once in state `in`, before the bad one (the call text
+     * shows both, separated by "; "); with_setup false: none. */
+    bool with_setup;
+    ak_op_id setup_op;
+    ak_args setup_args;
+    /* The status `message` is logged with when it is not the status the call returns
+     * (fmi2OK: it is that status). */
+    fmi2Status message_status;
+    /* A second message the bad call logs after `message` (NULL: only one), and its status. */
+    const char *message2;
+    fmi2Status status2;
 } ak_bad_call;
 
 /* What a master can hand fmi2Instantiate. */

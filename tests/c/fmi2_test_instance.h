@@ -10,11 +10,26 @@
 #include "fmi2_instance.h"
 #include "fmi2_test_ops.h"
 
-/* The inputs every test instance is initialized with: value references 0 to 8, the Real inputs
- * of both models (AngularKinematics: theta, theta_dot, theta_ddot; EulerRates: theta, omega,
- * omega_dot), far from EulerRates' singular theta[2]. */
-enum { AK_TEST_N_INPUTS = 9 };
-extern const fmi2Real AK_TEST_INPUTS[AK_TEST_N_INPUTS];
+/* The inputs every test instance is initialized with: the first AK_MODEL.n_inputs of these values
+ * go to the model's inputs, value references 0 to n_inputs - 1 (every model's inputs hold those,
+ * models/model.h): AngularKinematics theta, theta_dot, theta_ddot; EulerRates theta, omega,
+ * omega_dot (far from its singular theta[2]); AttitudePropagator omega, omega_dot (the first
+ * six). Arrays of inputs are sized AK_TEST_MAX_INPUTS and hold ak_test_n_inputs() values. */
+enum { AK_TEST_MAX_INPUTS = AK_MAX_INPUTS };
+extern const fmi2Real AK_TEST_INPUTS[AK_TEST_MAX_INPUTS];
+extern const fmi2ValueReference AK_TEST_INPUT_VRS[AK_TEST_MAX_INPUTS];
+static inline size_t ak_test_n_inputs(void) { return (size_t)AK_MODEL.n_inputs; }
+
+/* How an instance of this model fails a step, if it can: brought to StepComplete, these inputs
+ * set, then fmi2DoStep from AK_TEST_STEP_COMPLETE_TIME by 0.5 answers fmi2Discard and leaves it
+ * in StepFailed. n = 0: no step of the model can fail (StepFailed unreachable). Each model's
+ * tests/c/fmi2_bad_input_<model>.c defines it with its rows. */
+typedef struct {
+    size_t n;
+    fmi2ValueReference vr[3];
+    fmi2Real value[3];
+} ak_test_failing_step;
+extern const ak_test_failing_step AK_TEST_FAILING_STEP;
 /* theta[2] (value reference 1) at EulerRates' singularity for its default sequence body123. */
 #define AK_TEST_SINGULAR_THETA2 1.5707963267948966
 /* Set up with startTime 0 and stopTime 10; StepComplete is reached by one step from 0 to 1. */
@@ -30,7 +45,7 @@ fmi2Component ak_test_instantiate_for(unsigned int state, const char *name,
 
 /* From Instantiated to `state` by legal calls; false if any of them fails. Co-simulation:
  * AK_IN_INSTANTIATED, _INITIALIZATION_MODE, _STEP_COMPLETE (a step from 0 to 1), _STEP_FAILED
- * (then a step with theta[2] at the singularity: models that can fail a step only),
+ * (then the failing step of AK_TEST_FAILING_STEP: models that can fail a step only),
  * _TERMINATED. Model exchange (state | AK_ME): AK_IN_INSTANTIATED, _INITIALIZATION_MODE,
  * _EVENT_MODE, _CONTINUOUS_TIME_MODE, _TERMINATED. */
 bool ak_test_bring_to(fmi2Component c, unsigned int state);
@@ -38,7 +53,8 @@ bool ak_test_bring_to(fmi2Component c, unsigned int state);
 /* The states a test instance can be brought to, each with AK_ME for model exchange. */
 extern const unsigned int AK_TEST_STATES[];
 extern const int AK_TEST_N_STATES;
-/* True for a state of AK_TEST_STATES this model can reach (StepFailed: a model that can fail). */
+/* True for a state of AK_TEST_STATES this model can reach (StepFailed: a model with a failing
+ * step, AK_TEST_FAILING_STEP). */
 bool ak_test_state_reachable(unsigned int state);
 
 /* Bit-for-bit copy of an instance, to compare with after a call that must change nothing. */
@@ -69,6 +85,8 @@ size_t ak_test_main_outputs(fmi2ValueReference out[AK_MAX_VARIABLES]);
 
 /* The value reference of the variable of that name (the test fails hard if there is none). */
 fmi2ValueReference ak_test_vr(const char *name);
+/* The same for a variable the model may not have: false when it has none. */
+bool ak_test_find_vr(const char *name, fmi2ValueReference *vr);
 
 const char *ak_test_state_name(unsigned int state);
 const char *ak_test_state_label(unsigned int state);

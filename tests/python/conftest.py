@@ -128,27 +128,11 @@ def abuse_program(program, model):
     return BUILD_DIR / (program if model == "AngularKinematics" else f"{program}_{model}")
 
 
-# The models without a C bad-input table and driver (cmake/abuse_tests.cmake), and why: the tests
-# built on that table skip them, naming the reason.
-WITHOUT_C_DRIVER = {
-    "AttitudePropagator": "the C driver test_fmi2_calls and its bad-input table assume 9 inputs and "
-                          "the 1-2-3 reference outputs (tests/c/fmi2_test_instance.h); "
-                          "AttitudePropagator has 6 inputs and continuous states",
-}
-
-
-def require_c_driver(model):
-    """Skips the calling test for a model without a C bad-input table, naming the reason."""
-    if model in WITHOUT_C_DRIVER:
-        pytest.skip(f"{model} has no C bad-input table: {WITHOUT_C_DRIVER[model]}")
-
-
 @functools.lru_cache(maxsize=None)
 def bad_input_rows(model):
     """The bad-input table of the C code (tests/c/fmi2_bad_input_*.c), the one authority for
     every bad-input message, as its driver proved and printed it: one dict per row with state,
-    call, status and message (None: nothing logged). Skips the test for a model without one."""
-    require_c_driver(model)
+    call, status and message (None: nothing logged)."""
     driver = abuse_program("test_fmi2_calls", model)
     assert driver.is_file(), f"{driver} is missing: build it first (bash scripts/build.sh)"
     run = subprocess.run([str(driver), "--table"], capture_output=True, text=True)

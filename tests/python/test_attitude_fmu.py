@@ -239,7 +239,7 @@ def test_bad_input_is_refused_and_changes_nothing(make_attitude_instance):
          "(fmi2SetContinuousStates sets states in model exchange): only inputs and parameters "
          "can be set; no value set"),
         (lambda: instance.set({"der(q[1])": 0.5}),
-         "fmi2SetReal: vr[0] = 10 is der(q[1]), an local: only inputs and parameters can be "
+         "fmi2SetReal: vr[0] = 10 is der(q[1]), a local: only inputs and parameters can be "
          "set; no value set"),
         (lambda: instance.set({"q0[1]": 2.0}),
          "fmi2SetReal: q0[1] (vr[0] = 44) is a parameter of variability fixed: it can be set "
