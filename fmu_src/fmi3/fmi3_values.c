@@ -134,25 +134,23 @@ static bool arguments_given(const ak3_instance *instance, ak3_function function,
 }
 
 /* The usual get of every communication point: arrays of outputs (their first value references),
- * exactly nValues elements in all. Anything else takes the checked path. */
-static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values) {
+ * exactly nValues elements in all. Anything else takes the checked path. *lazy: one of them is
+ * of the lazy group; *one_run: they follow each other in the value array (one copy serves). */
+static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values, bool *lazy,
+                      bool *one_run) {
     size_t total = 0;
+    *lazy = false;
+    *one_run = true;
     for (size_t i = 0; i < nvr; i++) {
         const ak3_array *array = ak3_array_of(vr[i]);
         if (array == NULL || AK_MODEL.variables[vr[i]].causality != AK_CAUSALITY_OUTPUT) {
             return false;
         }
+        *lazy |= AK_MODEL.variables[vr[i]].group == AK_GROUP_LAZY;
+        *one_run &= vr[i] == vr[0] + total;
         total += array->n_elements;
     }
     return total == n_values;
-}
-
-static bool any_lazy(const fmi3ValueReference vr[], size_t nvr) {
-    bool lazy = false;
-    for (size_t i = 0; i < nvr; i++) {
-        lazy |= AK_MODEL.variables[vr[i]].group == AK_GROUP_LAZY;
-    }
-    return lazy;
 }
 
 /* The elements of checked value references, array after array. */
@@ -219,11 +217,15 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
     }
-    if (usual_get(vr, nvr, nValues)) {
-        const bool lazy = any_lazy(vr, nvr);
-        const fmi3Status status = ak3_read_status(lazy ? ak3_instance_update_all_outputs(instance)
-                                                       : ak3_instance_update_outputs(instance));
-        copy_out(instance, vr, nvr, values);
+    bool lazy_read, one_run;
+    if (usual_get(vr, nvr, nValues, &lazy_read, &one_run)) {
+        const fmi3Status status = ak3_read_status(
+            lazy_read ? ak3_instance_update_all_outputs(instance) : ak3_instance_update_outputs(instance));
+        if (one_run) {
+            memcpy(values, &instance->data.values[vr[0]], nValues * sizeof values[0]);
+        } else {
+            copy_out(instance, vr, nvr, values);
+        }
         return status;
     }
     bool main = false, lazy = false;
