@@ -6,7 +6,8 @@
  *   - FMI 3 cycle: three fmi3SetFloat64, one per input array (theta, theta_dot, theta_ddot),
  *     fmi3DoStep, one fmi3GetFloat64 of the four output arrays omega_fixed .. alpha_body
  *     (build/fmu3/binaries/x86_64-linux/AngularKinematics.so).
- * Inputs cycle through a table of 256 vectors, so every step evaluates. CPU time of the thread;
+ * Inputs cycle through the table of bench/bench_inputs.h (that of bench_fmu.c), so every step
+ * evaluates. CPU time of the thread;
  * medians over the repeats, the ratios are medians of the per-repeat ratios.
  *
  * Usage: bench_fmi3 FMI2_SO FMI3_SO [STEPS [REPEATS]]   (bench/run.sh passes the build's) */
@@ -19,13 +20,14 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_inputs.h"
 #include "fmi2FunctionTypes.h"
 #include "fmi3FunctionTypes.h"
 #include "kinematics_general.h"
 #include "sequences.h"
 
-enum { TABLE_ROWS = 256, MAX_REPEATS = 51 };
-static double input_table[TABLE_ROWS][9];
+enum { TABLE_ROWS = AK_BENCH_ROWS, MAX_REPEATS = 51 };
+static double input_table[TABLE_ROWS][AK_BENCH_INPUTS];
 static volatile double sink;
 static const char *GUID = "{c3391885-ba93-4824-bb36-df39703b63ee}";
 
@@ -161,12 +163,9 @@ int main(int argc, char **argv) {
         fprintf(stderr, "bench_fmi3: %s\n", dlerror());
         return 1;
     }
-    uint64_t x = 42;
-    for (int r = 0; r < TABLE_ROWS; r++) {
-        for (int k = 0; k < 9; k++) {
-            x = x * 6364136223846793005ULL + 1442695040888963407ULL;
-            input_table[r][k] = (double)(x >> 11) * (4.0 / 9007199254740992.0) - 2.0;
-        }
+    if (ak_bench_fill_inputs(input_table) != 0) {
+        fprintf(stderr, "bench_fmi3: the input table has equal consecutive values\n");
+        return 1;
     }
     double core[MAX_REPEATS], c2[MAX_REPEATS], c3[MAX_REPEATS], r2[MAX_REPEATS], r3[MAX_REPEATS];
     time_core(steps / 10); /* warm-up */

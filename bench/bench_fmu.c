@@ -36,10 +36,11 @@
 
 #include "fmi2FunctionTypes.h"
 #include "AngularKinematics_variables.h"
+#include "bench_inputs.h"
 #include "kinematics_general.h"
 
 
-enum { N_INPUTS = 9, N_OUTPUTS = 12, TABLE_ROWS = 256 };
+enum { N_INPUTS = AK_BENCH_INPUTS, N_OUTPUTS = 12, TABLE_ROWS = AK_BENCH_ROWS };
 
 static const fmi2ValueReference INPUT_VRS[N_INPUTS] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
 static const fmi2ValueReference OUTPUT_VRS[N_OUTPUTS] = {9,  10, 11, 12, 13, 14,
@@ -204,24 +205,10 @@ static unsigned long evaluations_between(unsigned long before, unsigned long aft
 
 static double input_table[TABLE_ROWS][N_INPUTS];
 
-/* Deterministic pseudo-random inputs: angles in [-pi, pi], rates in [-10, 10] rad/s,
- * accelerations in [-100, 100] rad/s^2. Consecutive rows differ in every input. */
+/* The inputs of bench/bench_inputs.h, shared with bench_fmi3.c. */
 static void fill_input_table(void) {
-    unsigned long long state = 0x9E3779B97F4A7C15ull;
-    static const double ranges[3] = {3.141592653589793, 10.0, 100.0};
-    for (int row = 0; row < TABLE_ROWS; row++) {
-        for (int k = 0; k < N_INPUTS; k++) {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            const double unit = (double)(state >> 11) / 9007199254740992.0; /* [0, 1) */
-            input_table[row][k] = (2.0 * unit - 1.0) * ranges[k / 3];
-        }
-    }
-    for (int row = 0; row < TABLE_ROWS; row++) {
-        for (int k = 0; k < N_INPUTS; k++) {
-            if (input_table[row][k] == input_table[(row + 1) % TABLE_ROWS][k]) {
-                fail("input table has equal consecutive values");
-            }
-        }
+    if (ak_bench_fill_inputs(input_table) != 0) {
+        fail("input table has equal consecutive values");
     }
 }
 
