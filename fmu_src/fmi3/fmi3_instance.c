@@ -32,6 +32,9 @@ void ak3_instance_reset(ak3_instance *instance) {
         }
     }
     instance->data.any_input_derivative = false;
+    if (AK_MODEL.initialize != NULL) {
+        (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
+    }
     instance->outputs_stale = true;
     instance->lazy_stale = true;
     instance->evaluation_status = AK_EVAL_OK;
@@ -41,6 +44,14 @@ void ak3_instance_reset(ak3_instance *instance) {
 ak_eval_status ak3_instance_update_outputs(ak3_instance *instance) {
     if (!instance->outputs_stale) {
         return instance->evaluation_status;
+    }
+    /* Until fmi3ExitInitializationMode the states follow the parameters they start from. */
+    if (AK_MODEL.initialize != NULL &&
+        (instance->state & (AK3_STATE_INSTANTIATED | AK3_STATE_INITIALIZATION_MODE)) != 0 &&
+        AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
+        instance->evaluation_status = AK_EVAL_FAILED;
+        instance->outputs_stale = false;
+        return AK_EVAL_FAILED;
     }
     instance->evaluation_status = AK_MODEL.evaluate(&instance->data);
     instance->outputs_stale = false;
