@@ -205,9 +205,11 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         if (variable->causality == AK_CAUSALITY_OUTPUT ||
             variable->causality == AK_CAUSALITY_LOCAL) {
             ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                    "fmi3SetFloat64: valueReferences[%zu] = %u is %s, an %s%s: only inputs and "
+                    "fmi3SetFloat64: valueReferences[%zu] = %u is %s, %s %s%s: only inputs and "
                     "parameters can be set; no value set",
-                    i, vr[i], array->name, ak_causality_name(variable->causality),
+                    i, vr[i], array->name,
+                    variable->causality == AK_CAUSALITY_OUTPUT ? "an" : "a",
+                    ak_causality_name(variable->causality),
                     ak3_is_state(vr[i]) ? " and a continuous state (fmi3SetContinuousStates sets "
                                           "states in model exchange)"
                                         : "");
