@@ -55,6 +55,31 @@ static bool step_arguments_valid(const ak3_instance *instance, double t, double 
     return true;
 }
 
+/* Advances the continuous states over h (a model with `step`), then evaluates the outputs at the
+ * end of the step. When either fails (*step_failed: the states) every value is as it was before
+ * the step, and a read evaluates again: the outputs are those of the last successful evaluation
+ * until then. A model without states is only evaluated (a failure changes no value). */
+static ak_eval_status advance(ak3_instance *instance, double h, bool *step_failed) {
+    *step_failed = false;
+    if (AK_MODEL.step == NULL) {
+        return ak3_instance_update_outputs(instance);
+    }
+    double saved[AK_MAX_VARIABLES];
+    const size_t n_values = sizeof(double) * (size_t)AK_MODEL.n_value_references;
+    memcpy(saved, instance->data.values, n_values);
+    ak_eval_status status = AK_MODEL.step(&instance->data, h); /* failing, it changed nothing */
+    ak3_instance_inputs_changed(instance);
+    *step_failed = status == AK_EVAL_FAILED;
+    if (!*step_failed) {
+        status = ak3_instance_update_outputs(instance);
+    }
+    if (status == AK_EVAL_FAILED) {
+        memcpy(instance->data.values, saved, n_values);
+        ak3_instance_inputs_changed(instance);
+    }
+    return status;
+}
+
 fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 currentCommunicationPoint,
                       fmi3Float64 communicationStepSize,
                       fmi3Boolean noSetFMUStatePriorToCurrentPoint,
@@ -83,24 +108,8 @@ fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 currentCommunicationPoint,
     *earlyReturn = fmi3False;
     fmi3Status status = fmi3OK;
     if (AK_MODEL.evaluate_in_step || AK_MODEL.step != NULL) {
-        double saved[AK_MAX_VARIABLES];
-        const size_t n_values = sizeof(double) * (size_t)AK_MODEL.n_value_references;
-        ak_eval_status evaluated = AK_EVAL_OK;
-        if (AK_MODEL.step != NULL) {
-            memcpy(saved, instance->data.values, n_values);
-            evaluated = AK_MODEL.step(&instance->data, h); /* failing, it changed nothing */
-            ak3_instance_inputs_changed(instance);
-        }
-        const bool step_failed = evaluated == AK_EVAL_FAILED;
-        if (!step_failed) {
-            evaluated = ak3_instance_update_outputs(instance);
-        }
-        if (evaluated == AK_EVAL_FAILED && AK_MODEL.step != NULL) {
-            memcpy(instance->data.values, saved, n_values); /* the states moved */
-            /* A read evaluates again at the restored values: the outputs are those of the last
-             * successful evaluation until then. */
-            ak3_instance_inputs_changed(instance);
-        }
+        bool step_failed = false;
+        const ak_eval_status evaluated = advance(instance, h, &step_failed);
         if (evaluated == AK_EVAL_FAILED) {
             ak3_log(instance, AK_LOG_WARNING, fmi3Discard,
                     "fmi3DoStep: the step from %.17g to %.17g is discarded: the %s; last "

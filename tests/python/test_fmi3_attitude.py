@@ -430,3 +430,33 @@ def test_zero_q0_refused_at_initialization_and_correctable():
         assert "fmi3SetFloat64: q0[1] = nan" in instance.errors()[-1]
     finally:
         instance.free()
+
+
+def test_step_that_cannot_be_taken_is_discarded_and_changes_nothing(make_attitude_instance):
+    """omega so large that the rotation over the step is not finite: fmi3Discard, the model's
+    message and the layer's, lastSuccessfulTime the step's start, every value as before; the
+    FMI 2 FMU discards the same step. A step with a sane omega then goes on from there."""
+    fmi2 = make_attitude_instance(name="fmi2")
+    fmi3 = Instance3(MODEL)
+    try:
+        fmi2_initialize(fmi2, 3, 2)
+        fmi3_initialize(fmi3, 3, 2)
+        assert fmi3.set({"omega": [1.0, 2.0, 3.0]}) == OK and fmi3.do_step(0.0, 0.5) == (OK, 0.5)
+        before = snapshot(fmi3)
+        assert fmi3.set({"omega": [1e308, -1e308, 1e308]}) == OK
+        kept = snapshot(fmi3)
+        assert fmi3.do_step(0.5, 10.0) == (DISCARD, 0.5)
+        warnings = [m for s, c, m in fmi3.messages if s in ("Error", "Discard")][-2:]
+        assert warnings[0].startswith("AttitudePropagator: omega = (1e+308, -1e+308, 1e+308) over "
+                                      "the communication step size 10")
+        assert warnings[1].startswith("fmi3DoStep: the step from 0.5 to 10.5 is discarded: the "
+                                      "states cannot be advanced over it")
+        assert snapshot(fmi3) == kept and kept != before
+        assert fmi2.set({"omega[1]": 1.0, "omega[2]": 2.0, "omega[3]": 3.0}) == 0
+        assert fmi2.call("fmi2DoStep", ctypes.c_double(0.0), ctypes.c_double(0.5), True) == 0
+        assert fmi2.set({"omega[1]": 1e308, "omega[2]": -1e308, "omega[3]": 1e308}) == 0
+        assert fmi2.call("fmi2DoStep", ctypes.c_double(0.5), ctypes.c_double(10.0), True) == DISCARD
+        assert fmi3.set({"omega": [1.0, 2.0, 3.0]}) == OK
+        assert fmi3.do_step(0.5, 0.5) == (OK, 1.0)
+    finally:
+        fmi3.free()
