@@ -52,7 +52,7 @@ set(AK_FMI3_HEADERS
   fmu_src/common/ak_bytes.h
   fmu_src/models/model.h
   fmu_src/models/log_categories.h)
-set(AK_FMI3_MODELS AngularKinematics EulerRates)
+set(AK_FMI3_MODELS AngularKinematics EulerRates AttitudePropagator)
 set(AK_FMI3_ARRAYS_AngularKinematics
   fmu_src/models/AngularKinematics/fmi3/AngularKinematics_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_AngularKinematics
@@ -69,6 +69,8 @@ set(AK_MODEL_SOURCES_EulerRates
 set(AK_MODEL_HEADERS_EulerRates
   fmu_src/models/EulerRates/EulerRates_variables.h)
 set(AK_MODEL_DESCRIPTION_EulerRates "fmu_src/models/EulerRates/modelDescription.xml")
+set(AK_FMI3_ARRAYS_AttitudePropagator
+  fmu_src/models/AttitudePropagator/fmi3/AttitudePropagator_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_AttitudePropagator
   fmu_src/models/AttitudePropagator/model.c
   fmu_src/models/AttitudePropagator/AttitudePropagator_variables.c)

@@ -99,18 +99,36 @@ def _flag(value):
     return str(bool(value)).lower()
 
 
-def _start(value, count):
-    return " ".join([repr(float(value))] * count)
+def _start(elements):
+    return " ".join(repr(float(e.start)) for e in elements)
+
+
+def _initial_dependencies(model, entry):
+    """The knowns of an array in Initialization Mode: the inputs it depends on and, in place of
+    each continuous state, the parameters the state's start is computed from (as FMI 2's
+    <InitialUnknowns>), as arrays."""
+    owner = array_of_scalar(model)
+    by_vr = model.scalars_by_vr
+    deps = set()
+    for s in model.scalars:
+        if s.base == entry["name"]:
+            for d in s.depends:
+                for k in (by_vr[d].initial_depends if by_vr[d].state else [d]):
+                    deps.add(owner[k]["vr"])
+    return sorted(deps)
 
 
 def model_description(model):
     c = model.capabilities
     derivatives = _flag(c["provides_directional_derivative"])
+    # fmi3GetVariableDependencies answers from the C table, which lists the inputs only: a
+    # model with continuous states (whose outputs depend on them too) does not declare it.
+    per_element = _flag(not model.states)
     common = (f'    canGetAndSetFMUState="true"\n'
               f'    canSerializeFMUState="true"\n'
               f'    providesDirectionalDerivatives="{derivatives}"\n'
               f'    providesAdjointDerivatives="{derivatives}"\n'
-              f'    providesPerElementDependencies="true"')
+              f'    providesPerElementDependencies="{per_element}"')
     out = [f'''<?xml version="1.0" encoding="UTF-8"?>
 <!-- {HEADER_NOTE.format(source=f"models/{model.name}/description.py")} -->
 <fmiModelDescription
@@ -143,7 +161,10 @@ def model_description(model):
     out += ['    <Unit name="1/s">', '      <BaseUnit s="-1"/>', "    </Unit>",
             '    <Unit name="s">', '      <BaseUnit s="1"/>', "    </Unit>",
             "  </UnitDefinitions>", "", "  <TypeDefinitions>"]
-    for name, (quantity, unit, display) in project.TYPES.items():
+    used = {s.type for s in model.scalars}
+    types = {**project.TYPES,
+             **{k: v for k, v in project.OPTIONAL_TYPES.items() if k in used}}
+    for name, (quantity, unit, display) in types.items():
         attributes = "".join(f' {key}="{value}"' for key, value in
                              (("quantity", quantity), ("unit", unit or None),
                               ("displayUnit", display)) if value)
@@ -165,9 +186,9 @@ def model_description(model):
             "  <ModelVariables>",
             f'    <Float64 name="time" valueReference="{TIME_VR}" causality="independent" '
             'variability="continuous" unit="s" description="simulation time"/>']
+    owner = array_of_scalar(model)
     for entry in model.arrays:
-        first = model.scalar(entry["name"] if not entry.get("shape") else
-                             entry["name"] + "[" + ",".join("1" for _ in entry["shape"]) + "]")
+        first = next(s for s in model.scalars if s.base == entry["name"])  # lowest vr
         # element i (row i, column j) of the array: the description speaks of one element
         description = xml_escape(entry["description"].format(i="i", j="j").replace("fmi2", "fmi3"))
         head = (f'name="{entry["name"]}" valueReference="{entry["vr"]}" '
@@ -181,8 +202,11 @@ def model_description(model):
                        f'start="{int(first.start)}"/>')
             continue
         attributes = f' declaredType="{entry["type"]}"'
-        if entry["causality"] != "output":
-            attributes += f' start="{_start(first.start, n_elements(entry))}"'
+        if "derivative_of" in entry:
+            attributes += f' derivative="{owner[first.derivative_of]["vr"]}"'
+        if entry["causality"] in ("input", "parameter"):
+            elements = [s for s in model.scalars if s.base == entry["name"]]
+            attributes += f' start="{_start(elements)}"'
         if entry["causality"] == "parameter":
             attributes += f' min="{first.min!r}" max="{first.max!r}"'
         dims = "".join(f'<Dimension start="{n}"/>' for n in entry.get("shape", ()))
@@ -192,9 +216,16 @@ def model_description(model):
             out.append(f"    <Float64 {head} {kind}{attributes}/>")
     out += ["  </ModelVariables>", "", "  <ModelStructure>"]
     outputs = [e for e in model.arrays if e["causality"] == "output"]
-    for element in ("Output", "InitialUnknown"):
-        for entry in outputs:
-            deps = array_dependencies(model, entry)
+    derivatives = [e for e in model.arrays if "derivative_of" in e]
+    # FMI 3.0, 2.4.8: Output, ContinuousStateDerivative, InitialUnknown in this order; the
+    # initial unknowns are the outputs and the state derivatives (the states are outputs here).
+    sections = [("Output", outputs, array_dependencies),
+                ("ContinuousStateDerivative", derivatives, array_dependencies),
+                ("InitialUnknown", sorted(outputs + derivatives, key=lambda e: e["vr"]),
+                 _initial_dependencies)]
+    for element, entries, dependencies in sections:
+        for entry in entries:
+            deps = dependencies(model, entry)
             kinds = " ".join("dependent" for _ in deps)
             out.append(f'    <{element} valueReference="{entry["vr"]}" '
                        f'dependencies="{" ".join(str(d) for d in deps)}" '

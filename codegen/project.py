@@ -79,6 +79,5 @@ FMI2_HEADERS = ["fmi2/fmi2_instance.h", "fmi2/fmi2_logging.h", "fmi2/fmi2_state_
 
 # The models, each a folder fmu_src/models/<name>/ with description.py.
 MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator"]
-# The models built as FMI 3.0 FMUs too (dist/fmi3/); AttitudePropagator's continuous states are
-# not wired into the FMI 3 layer yet.
-FMI3_MODELS = ["AngularKinematics", "EulerRates"]
+# The models built as FMI 3.0 FMUs too (dist/fmi3/), from the same descriptions and FMI 3 layer.
+FMI3_MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator"]

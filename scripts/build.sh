@@ -9,11 +9,11 @@ cd "$(dirname "$0")/.."
 bash scripts/configure.sh windows
 cmake --build build-win64 --parallel 2
 bash scripts/configure.sh aarch64
-cmake --build build-aarch64 --parallel 2 --target AngularKinematics_fmi3 EulerRates_fmi3 fmi3_driver
+cmake --build build-aarch64 --parallel 2 --target AngularKinematics_fmi3 EulerRates_fmi3 AttitudePropagator_fmi3 fmi3_driver
 win64="$PWD/build-win64/fmu/binaries/win64"
 win3="$PWD/build-win64/fmu3/binaries/x86_64-windows"
 arm3="$PWD/build-aarch64/fmu3/binaries/aarch64-linux"
 bash scripts/configure.sh release \
   -DAK_EXTRA_PLATFORM_BINARIES="$win64/AngularKinematics.dll;$win64/EulerRates.dll;$win64/AttitudePropagator.dll" \
-  -DAK_EXTRA_FMI3_BINARIES="$win3/AngularKinematics.dll;$win3/EulerRates.dll;$arm3/AngularKinematics.so;$arm3/EulerRates.so"
+  -DAK_EXTRA_FMI3_BINARIES="$win3/AngularKinematics.dll;$win3/EulerRates.dll;$win3/AttitudePropagator.dll;$arm3/AngularKinematics.so;$arm3/EulerRates.so;$arm3/AttitudePropagator.so"
 cmake --build build --parallel 2

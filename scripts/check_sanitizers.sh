@@ -46,7 +46,7 @@ export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
 
 programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRates
   test_fmi2_instances_EulerRates soak_fmi2_EulerRates fmi3_abuse_AngularKinematics
-  fmi3_abuse_EulerRates test_fmi2_calls_AttitudePropagator"
+  fmi3_abuse_EulerRates fmi3_abuse_AttitudePropagator test_fmi2_calls_AttitudePropagator"
 echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
 # shellcheck disable=SC2086
 configure_and_build asan $programs test_kinematics test_attitude abuse_attitude
@@ -59,7 +59,7 @@ for suffix in "" _EulerRates; do
   run asan+ubsan "build-asan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run asan+ubsan "build-asan/soak_fmi2$suffix" "$soak" --no-rss-check
 done
-for model in AngularKinematics EulerRates; do # the FMI 3 layer (tests/c/fmi3_abuse.c)
+for model in AngularKinematics EulerRates AttitudePropagator; do # the FMI 3 layer (tests/c/fmi3_abuse.c)
   run asan+ubsan "build-asan/fmi3_abuse_$model" calls
   run asan+ubsan "build-asan/fmi3_abuse_$model" instances 1000 4 "$steps"
   run asan+ubsan "build-asan/fmi3_abuse_$model" soak "$soak"
@@ -69,7 +69,7 @@ done
 # Leak detection is off here only because the Python interpreter itself does not free everything
 # at exit; the FMU's leaks are checked by the C programs above and by valgrind below.
 configure_and_build asan fmu_AngularKinematics fmu_EulerRates fmu_AttitudePropagator \
-  fmu3_AngularKinematics fmu3_EulerRates \
+  fmu3_AngularKinematics fmu3_EulerRates fmu3_AttitudePropagator \
   model_info_AngularKinematics model_info_EulerRates model_info_AttitudePropagator
 # --quick: the tests of the FMI layer only (calls, bad input, FMU state, model exchange,
 # derivatives, EulerRates); the whole suite takes a minute and a half under ASan. Never
@@ -80,7 +80,7 @@ if [ "$quick" = --quick ]; then
     test_model_exchange.py test_directional_derivatives.py test_output_derivatives.py \
     test_input_interpolation.py test_euler_rates.py test_value_runs.py test_fmi3_state_machine.py \
     test_fmi3_bad_input.py test_fmi3_fmu_state.py test_fmi3_derivatives.py test_fmi3_cosimulation.py \
-    test_fmi3_bit_identity.py test_attitude_fmu.py test_attitude_derivatives.py)
+    test_fmi3_bit_identity.py test_fmi3_attitude.py test_attitude_fmu.py test_attitude_derivatives.py)
 else
   suite="tests/python --ignore=tests/python/test_windows_binary.py --ignore=tests/python/test_fmi3_platforms.py"
 fi
@@ -95,13 +95,13 @@ AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asa
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"
 configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates \
-  fmi3_abuse_AngularKinematics fmi3_abuse_EulerRates abuse_attitude
+  fmi3_abuse_AngularKinematics fmi3_abuse_EulerRates fmi3_abuse_AttitudePropagator abuse_attitude
 run tsan build-tsan/abuse_attitude 8 50 "$steps" 1000
 for suffix in "" _EulerRates; do
   run tsan "build-tsan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run tsan "build-tsan/test_fmi2_instances$suffix" 64 8 "$steps"
 done
-for model in AngularKinematics EulerRates; do
+for model in AngularKinematics EulerRates AttitudePropagator; do
   run tsan "build-tsan/fmi3_abuse_$model" instances 1000 4 "$steps"
 done
 
@@ -123,7 +123,7 @@ for suffix in "" _EulerRates; do
   memcheck "build/test_fmi2_instances$suffix" 1000 4 "$valgrind_steps"
   memcheck "build/soak_fmi2$suffix" "$valgrind_soak" --no-rss-check
 done
-for model in AngularKinematics EulerRates; do
+for model in AngularKinematics EulerRates AttitudePropagator; do
   memcheck "build/fmi3_abuse_$model" calls
   memcheck "build/fmi3_abuse_$model" instances 100 4 "$valgrind_steps"
   memcheck "build/fmi3_abuse_$model" soak "$valgrind_soak"

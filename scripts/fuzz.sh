@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Fuzzes the FMI layer of both FMUs with libFuzzer + ASan + UBSan (tests/c/fuzz_fmi2.c, built
-# once per model: build-fuzz/fuzz_fmi2 for AngularKinematics, build-fuzz/fuzz_fmi2_EulerRates),
+# Fuzzes the FMI layer of the FMUs with libFuzzer + ASan + UBSan (tests/c/fuzz_fmi2.c, built
+# once per model: build-fuzz/fuzz_fmi2 for AngularKinematics, build-fuzz/fuzz_fmi2_EulerRates;
+# tests/c/fuzz_fmi3.c for every FMI 3 model, AttitudePropagator's FMI 3 layer only),
 # starting from the corpus kept in the repository (tests/fuzz_corpus/, one for both models:
 # the encoding is the same).
 #
@@ -16,7 +17,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 keep=${2:-}
-models=${AK_FUZZ_MODELS:-AngularKinematics EulerRates}
+models=${AK_FUZZ_MODELS:-AngularKinematics EulerRates AttitudePropagator}
 corpus=tests/fuzz_corpus
 
 if [ -z "${AK_SET_UP:-}" ]; then
@@ -25,7 +26,7 @@ if [ -z "${AK_SET_UP:-}" ]; then
 fi
 bash scripts/configure.sh fuzz
 cmake --build build-fuzz --parallel 2 --target fuzz_fmi2 fuzz_fmi2_EulerRates \
-  fuzz_fmi3_AngularKinematics fuzz_fmi3_EulerRates \
+  fuzz_fmi3_AngularKinematics fuzz_fmi3_EulerRates fuzz_fmi3_AttitudePropagator \
   >build-fuzz/build.log 2>&1 || {
   cat build-fuzz/build.log
   exit 1
@@ -41,6 +42,11 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 for model in $models; do
   if [ "$model" = AngularKinematics ]; then fuzzer=build-fuzz/fuzz_fmi2; else fuzzer=build-fuzz/fuzz_fmi2_$model; fi
+  if [ ! -x "$fuzzer" ]; then # AttitudePropagator: the FMI 2 abuse programs do not cover it yet
+    echo "fuzz ($model): no FMI 2 fuzzer ($fuzzer); the FMI 3 layer only"
+    fuzzer=
+  fi
+  if [ -n "$fuzzer" ]; then
   echo "fuzz ($model): replaying the $(ls "$corpus" | wc -l) inputs of $corpus"
   if ! "$fuzzer" -runs=0 "$corpus" >"build-fuzz/replay-$model.log" 2>&1; then
     tail -60 "build-fuzz/replay-$model.log"
@@ -60,6 +66,7 @@ for model in $models; do
   grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" \
     "build-fuzz/fuzz-$model.log" | sed "s/^/    /"
   echo "fuzz ($model): 0 crashes in $seconds s"
+  fi
 
   # The FMI 3 layer: its own encoding (tests/c/fuzz_fmi3.c), fuzzed from scratch for the same time.
   echo "fuzz ($model, FMI 3): fuzzing for $seconds s"
@@ -73,7 +80,7 @@ for model in $models; do
   grep -E "^stat::(number_of_executed_units|new_units_added)" "build-fuzz/fuzz3-$model.log" | sed "s/^/    /"
   echo "fuzz ($model, FMI 3): 0 crashes in $seconds s"
 
-  if [ "$keep" = --keep ]; then
+  if [ "$keep" = --keep ] && [ -n "$fuzzer" ]; then
     before=$(ls "$corpus" | wc -l)
     "$fuzzer" -merge=1 "$corpus" "$scratch/$model" >"build-fuzz/merge-$model.log" 2>&1
     echo "fuzz ($model): corpus $corpus: $before -> $(ls "$corpus" | wc -l) inputs"

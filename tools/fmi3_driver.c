@@ -1,9 +1,12 @@
 /* A minimal FMI 3.0 co-simulation importer of our own, to prove the binaries of other platforms:
  * built natively, for aarch64 (run under qemu-aarch64) and with mingw-w64 (run under wine), it
- * loads one FMI 3 binary of AngularKinematics or EulerRates, drives it through every rotation
- * sequence (and both frames of EulerRates) with fixed inputs, and prints every output, and for
- * AngularKinematics the directional, adjoint and output derivatives, as the hex of their IEEE 754
- * bits, with the status of each call. Two platforms agree when their printouts are identical.
+ * loads one FMI 3 binary of AngularKinematics, EulerRates or AttitudePropagator, drives it
+ * through every rotation sequence (and both frames of EulerRates and AttitudePropagator) with
+ * fixed inputs, and prints every output, and for AngularKinematics and AttitudePropagator the
+ * directional and adjoint derivatives (AngularKinematics also the output derivatives), as the
+ * hex of their IEEE 754 bits, with the status of each call. AttitudePropagator's outputs come
+ * from its states, integrated by fmi3DoStep: the printout proves the integration too. Two
+ * platforms agree when their printouts are identical.
  *
  * The inputs are exact binary fractions from an integer generator, so every platform feeds the
  * FMU the same bits and any difference comes from the binaries alone.
@@ -81,20 +84,30 @@ static int load_api(void *library, fmi3_api *api) {
     return 1;
 }
 
-/* What the driver knows of each model (docs/fmi3_variables.md). */
+/* What the driver knows of each model (docs/fmi3_variables.md). Derivatives: of the first
+ * n_unknowns outputs (n_rows elements) with respect to the knowns (n_columns elements). */
 typedef struct {
     const char *name;
     const char *token;
+    fmi3ValueReference inputs[3];
+    size_t n_inputs, n_input_values;
     fmi3ValueReference outputs[10];
     size_t n_outputs, n_output_values;
     fmi3ValueReference sequence, frame; /* frame 0: none */
-    int derivatives;
+    fmi3ValueReference knowns[3];
+    size_t n_knowns, n_columns, n_unknowns, n_rows; /* n_knowns 0: no derivatives */
+    int output_derivatives;
 } model_facts;
 
 static const model_facts MODELS[] = {
-    {"AngularKinematics", "{c3391885-ba93-4824-bb36-df39703b63ee}",
-     {9, 12, 15, 18, 21, 30, 34, 43, 52, 61}, 10, 61, 70, 0, 1},
-    {"EulerRates", "{6f0d3c8e-2b1a-4e55-9a53-2f4c1d7e8b90}", {9, 12, 15, 18, 21}, 5, 13, 22, 23, 0},
+    {"AngularKinematics", "{c3391885-ba93-4824-bb36-df39703b63ee}", {0, 3, 6}, 3, 9,
+     {9, 12, 15, 18, 21, 30, 34, 43, 52, 61}, 10, 61, 70, 0, {0, 3, 6}, 3, 9, 5, 21, 1},
+    {"EulerRates", "{6f0d3c8e-2b1a-4e55-9a53-2f4c1d7e8b90}", {0, 3, 6}, 3, 9,
+     {9, 12, 15, 18, 21}, 5, 13, 22, 23, {0}, 0, 0, 0, 0, 0},
+    /* q, R, theta, theta_dot, omega_fixed, omega_body, alpha_fixed, alpha_body, distance; the
+     * knowns omega, omega_dot and the state q, the unknowns q, R, theta, theta_dot, omega_fixed */
+    {"AttitudePropagator", "{8b5e2f4a-7c13-4d9e-b0a6-51e3c9d2f7a8}", {0, 3}, 2, 6,
+     {6, 14, 23, 26, 29, 32, 35, 38, 41}, 9, 32, 43, 42, {0, 3, 6}, 3, 10, 5, 22, 0},
 };
 
 static uint64_t generator = 0x853c49e6748fea9bULL;
@@ -140,31 +153,35 @@ static void run_case(const fmi3_api *api, const model_facts *m, int64_t sequence
     }
     status("enter", api->enter_initialization_mode(instance, fmi3False, 0.0, 0.0, fmi3False, 0.0));
     status("exit", api->exit_initialization_mode(instance));
-    const fmi3ValueReference inputs[3] = {0, 3, 6};
     double t = 0.0;
     for (int step = 0; step < steps; step++) {
         double u[9], y[61];
-        for (int k = 0; k < 9; k++) {
+        for (size_t k = 0; k < m->n_input_values; k++) {
             u[k] = next_input();
         }
-        status("set", api->set_float64(instance, inputs, 3, u, 9));
+        status("set", api->set_float64(instance, m->inputs, m->n_inputs, u, m->n_input_values));
         fmi3Boolean event, terminate, early;
         double last;
         status("step", api->do_step(instance, t, 0.125, fmi3True, &event, &terminate, &early, &last));
         t = last;
         status("get", api->get_float64(instance, m->outputs, m->n_outputs, y, m->n_output_values));
         print_values("outputs", y, m->n_output_values);
-        if (m->derivatives) {
+        if (m->n_knowns > 0) {
             double seed[61], sensitivity[61];
             for (int k = 0; k < 61; k++) {
                 seed[k] = (double)(k + 1) * 0.25;
             }
-            status("directional", api->directional(instance, m->outputs, 5, inputs, 3, seed, 9,
-                                                   sensitivity, 21));
-            print_values("directional", sensitivity, 21);
-            status("adjoint",
-                   api->adjoint(instance, m->outputs, 5, inputs, 3, seed, 21, sensitivity, 9));
-            print_values("adjoint", sensitivity, 9);
+            status("directional",
+                   api->directional(instance, m->outputs, m->n_unknowns, m->knowns, m->n_knowns,
+                                    seed, m->n_columns, sensitivity, m->n_rows));
+            print_values("directional", sensitivity, m->n_rows);
+            status("adjoint", api->adjoint(instance, m->outputs, m->n_unknowns, m->knowns,
+                                           m->n_knowns, seed, m->n_rows, sensitivity,
+                                           m->n_columns));
+            print_values("adjoint", sensitivity, m->n_columns);
+        }
+        if (m->output_derivatives) {
+            double sensitivity[12];
             const fmi3Int32 orders[4] = {1, 1, 1, 1};
             status("output derivatives",
                    api->output_derivatives(instance, m->outputs, 4, orders, sensitivity, 12));

@@ -1,10 +1,14 @@
-/* FMI 3.0 co-simulation stepping. The map from inputs to outputs is algebraic and FMI 3 gives
- * no input derivatives, so a step holds the inputs and moves the time; the outputs at the end
- * are those of the inputs. A model whose evaluation can fail (evaluate_in_step) is evaluated at
- * the end of the step: when that fails the step is not taken (fmi3Discard, lastSuccessfulTime =
- * currentCommunicationPoint, the time stays), and the importer may terminate, set an FMU state
- * or reset. */
+/* FMI 3.0 co-simulation stepping. FMI 3 gives no input derivatives, so a step holds the inputs
+ * over the step. A model with continuous states (ak_model.step) advances them over the step
+ * with the inputs at its start (a model that wants the inputs' rates has them as inputs of its
+ * own: AttitudePropagator's omega_dot); for a model without, the map from inputs to outputs is
+ * algebraic and a step only moves the time. A model whose evaluation can fail or follows the
+ * path (evaluate_in_step), or has states, is evaluated at the end of the step: when the states
+ * cannot be advanced or the evaluation fails the step is not taken (fmi3Discard,
+ * lastSuccessfulTime = currentCommunicationPoint; time, states and outputs stay), and the
+ * importer may terminate, set an FMU state or reset. */
 #include <math.h>
+#include <string.h>
 
 #include "fmi3Functions.h"
 #include "fmi3_instance.h"
@@ -51,6 +55,31 @@ static bool step_arguments_valid(const ak3_instance *instance, double t, double 
     return true;
 }
 
+/* Advances the continuous states over h (a model with `step`), then evaluates the outputs at the
+ * end of the step. When either fails (*step_failed: the states) every value is as it was before
+ * the step, and a read evaluates again: the outputs are those of the last successful evaluation
+ * until then. A model without states is only evaluated (a failure changes no value). */
+static ak_eval_status advance(ak3_instance *instance, double h, bool *step_failed) {
+    *step_failed = false;
+    if (AK_MODEL.step == NULL) {
+        return ak3_instance_update_outputs(instance);
+    }
+    double saved[AK_MAX_VARIABLES];
+    const size_t n_values = sizeof(double) * (size_t)AK_MODEL.n_value_references;
+    memcpy(saved, instance->data.values, n_values);
+    ak_eval_status status = AK_MODEL.step(&instance->data, h); /* failing, it changed nothing */
+    ak3_instance_inputs_changed(instance);
+    *step_failed = status == AK_EVAL_FAILED;
+    if (!*step_failed) {
+        status = ak3_instance_update_outputs(instance);
+    }
+    if (status == AK_EVAL_FAILED) {
+        memcpy(instance->data.values, saved, n_values);
+        ak3_instance_inputs_changed(instance);
+    }
+    return status;
+}
+
 fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 currentCommunicationPoint,
                       fmi3Float64 communicationStepSize,
                       fmi3Boolean noSetFMUStatePriorToCurrentPoint,
@@ -78,13 +107,17 @@ fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 currentCommunicationPoint,
     *terminateSimulation = fmi3False;
     *earlyReturn = fmi3False;
     fmi3Status status = fmi3OK;
-    if (AK_MODEL.evaluate_in_step) {
-        const ak_eval_status evaluated = ak3_instance_update_outputs(instance);
+    if (AK_MODEL.evaluate_in_step || AK_MODEL.step != NULL) {
+        bool step_failed = false;
+        const ak_eval_status evaluated = advance(instance, h, &step_failed);
         if (evaluated == AK_EVAL_FAILED) {
             ak3_log(instance, AK_LOG_WARNING, fmi3Discard,
-                    "fmi3DoStep: the step from %.17g to %.17g is discarded: the outputs cannot "
-                    "be evaluated at its end; last successful time %.17g",
-                    t, t + h, instance->time);
+                    "fmi3DoStep: the step from %.17g to %.17g is discarded: the %s; last "
+                    "successful time %.17g",
+                    t, t + h,
+                    step_failed ? "states cannot be advanced over it"
+                                : "outputs cannot be evaluated at its end",
+                    instance->time);
             *lastSuccessfulTime = instance->time;
             return fmi3Discard;
         }

@@ -1,9 +1,22 @@
 /* FMI 3.0 per-element dependencies (providesPerElementDependencies): which elements of which
  * input arrays each element of an output array depends on, from the model's variable table (the
  * same dependencies that modelDescription.xml states per array). Element indices are 1-based in
- * the row-major order of the array, 0 for a scalar (FMI 3, section 2.2.10). */
+ * the row-major order of the array, 0 for a scalar (FMI 3, section 2.2.10). The table lists the
+ * inputs only: a model with continuous states, on which its outputs depend as well, does not
+ * declare providesPerElementDependencies, and both functions refuse. */
 #include "fmi3Functions.h"
 #include "fmi3_values.h"
+
+static bool provided(const ak3_instance *instance, ak3_function function) {
+    if (AK_MODEL.n_states == 0) {
+        return true;
+    }
+    ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+            "%s: not provided by %s (modelDescription.xml: providesPerElementDependencies="
+            "\"false\"; <ModelStructure> gives the dependencies per array)",
+            ak3_function_name(function), AK_MODEL.model_identifier);
+    return false;
+}
 
 static size_t dependency_count(const ak3_array *array) {
     size_t n = 0;
@@ -21,7 +34,7 @@ fmi3Status fmi3GetNumberOfVariableDependencies(fmi3Instance c, fmi3ValueReferenc
                                                size_t *nDependencies) {
     ak3_instance *instance = c;
     const ak3_function self = AK3_GET_NUMBER_OF_VARIABLE_DEPENDENCIES;
-    if (!ak3_call_allowed(instance, self)) {
+    if (!ak3_call_allowed(instance, self) || !provided(instance, self)) {
         return fmi3Error;
     }
     const ak3_array *array = ak3_array_of_causality(instance, self, "valueReference", 0,
@@ -41,7 +54,7 @@ fmi3Status fmi3GetVariableDependencies(fmi3Instance c, fmi3ValueReference depend
                                        size_t nDependencies) {
     ak3_instance *instance = c;
     const ak3_function self = AK3_GET_VARIABLE_DEPENDENCIES;
-    if (!ak3_call_allowed(instance, self)) {
+    if (!ak3_call_allowed(instance, self) || !provided(instance, self)) {
         return fmi3Error;
     }
     const ak3_array *array =

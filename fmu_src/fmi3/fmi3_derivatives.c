@@ -1,7 +1,9 @@
 /* FMI 3.0 derivatives: output derivatives (maxOutputDerivativeOrder = 1) and directional and
  * adjoint derivatives (providesDirectionalDerivatives, providesAdjointDerivatives). The
  * mathematics is the model's (ak_model.jacobian, ak_model.output_derivatives); this file checks
- * arguments, expands arrays into their elements and applies seeds. A model without one of them
+ * arguments, expands arrays into their elements and applies seeds. As in FMI 2, the unknowns of
+ * a directional or adjoint derivative are outputs or continuous-state derivatives, the knowns
+ * inputs or continuous states (the model's Jacobian has a column per input, then per state). A model without one of them
  * gets the function refused with a message naming the flag its modelDescription.xml leaves
  * false. */
 #include <math.h>
@@ -19,14 +21,34 @@ static fmi3Status not_provided(const ak3_instance *instance, ak3_function functi
     return fmi3Error;
 }
 
-/* Checks a list of value references of one causality; *total gets their number of elements. */
+/* The index of vr in a model's list of states (or of state derivatives), or -1. */
+static int state_index(const unsigned int *vrs, unsigned int vr) {
+    for (int k = 0; k < AK_MODEL.n_states; k++) {
+        if (vrs[k] == vr) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+/* The column of a known element (checked: of an input or a state) in the model's Jacobian. */
+static size_t known_column(unsigned int vr) {
+    const int state = state_index(AK_MODEL.state_vrs, vr);
+    return state >= 0 ? (size_t)(AK_MODEL.n_inputs + state) : (size_t)vr;
+}
+
+/* Checks a list of value references of one causality; *total gets their number of elements.
+ * also: the first elements of arrays accepted besides (the states or their derivatives), or
+ * NULL. */
 static bool arrays_valid(const ak3_instance *instance, ak3_function function,
                          const char *list_name, const unsigned int vr[], size_t n,
-                         ak_causality causality, size_t *total) {
+                         ak_causality causality, const unsigned int *also, size_t *total) {
     *total = 0;
     for (size_t i = 0; i < n; i++) {
-        const ak3_array *array =
-            ak3_array_of_causality(instance, function, list_name, i, vr[i], causality);
+        const ak3_array *array = ak3_array_of(vr[i]);
+        if (array == NULL || also == NULL || state_index(also, vr[i]) < 0) {
+            array = ak3_array_of_causality(instance, function, list_name, i, vr[i], causality);
+        }
         if (array == NULL) {
             return false;
         }
@@ -73,7 +95,8 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance c, const fmi3ValueReference vr[
     if (!ak3_given(instance, self, nvr, "nValueReferences", vr, "valueReferences") ||
         !ak3_given(instance, self, nvr, "nValueReferences", orders, "orders") ||
         !ak3_given(instance, self, nValues, "nValues", values, "values") ||
-        !arrays_valid(instance, self, "valueReferences", vr, nvr, AK_CAUSALITY_OUTPUT, &total)) {
+        !arrays_valid(instance, self, "valueReferences", vr, nvr, AK_CAUSALITY_OUTPUT, NULL,
+                      &total)) {
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
@@ -116,9 +139,9 @@ static bool derivative_arguments_valid(const ak3_instance *instance, ak3_functio
         !ak3_given(instance, function, nSeed, "nSeed", seed, "seed") ||
         !ak3_given(instance, function, nSensitivity, "nSensitivity", sensitivity, "sensitivity") ||
         !arrays_valid(instance, function, "unknowns", unknowns, nUnknowns, AK_CAUSALITY_OUTPUT,
-                      n_rows) ||
+                      AK_MODEL.derivative_vrs, n_rows) ||
         !arrays_valid(instance, function, "knowns", knowns, nKnowns, AK_CAUSALITY_INPUT,
-                      n_columns)) {
+                      AK_MODEL.state_vrs, n_columns)) {
         return false;
     }
     /* Directional: seed per known element, sensitivity per unknown element; adjoint: reversed. */
@@ -160,14 +183,14 @@ static fmi3Status derivative(fmi3Instance c, ak3_function self, const char *flag
     for (size_t i = 0; i < nUnknowns; i++) {
         unsigned int rows[AK_MAX_VARIABLES];
         const size_t n = expand(&unknowns[i], 1, rows, AK_MAX_VARIABLES);
-        double J[AK_MAX_VARIABLES][AK_MAX_KNOWNS]; /* columns: the inputs (then states: none here) */
+        double J[AK_MAX_VARIABLES][AK_MAX_KNOWNS]; /* columns: the inputs, then the states */
         AK_MODEL.jacobian(&instance->data, rows, n, J);
         for (size_t r = 0; r < n; r++, row++) {
             size_t column = 0;
             double sum = 0.0;
             for (size_t j = 0; j < nKnowns; j++) {
                 for (unsigned int e = 0; e < AK3_ARRAYS[knowns[j]].n_elements; e++, column++) {
-                    const double d = J[r][knowns[j] + e];
+                    const double d = J[r][known_column(knowns[j] + e)];
                     if (adjoint) {
                         sensitivity[column] += d * seed[row];
                     } else {

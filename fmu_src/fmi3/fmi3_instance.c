@@ -32,6 +32,9 @@ void ak3_instance_reset(ak3_instance *instance) {
         }
     }
     instance->data.any_input_derivative = false;
+    if (AK_MODEL.initialize != NULL) {
+        (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
+    }
     instance->outputs_stale = true;
     instance->lazy_stale = true;
     instance->evaluation_status = AK_EVAL_OK;
@@ -41,6 +44,14 @@ void ak3_instance_reset(ak3_instance *instance) {
 /* Evaluates the main group, and the lazy group with it when with_lazy and the model can do both
  * at once (as the FMI 2 layer). */
 static ak_eval_status evaluate(ak3_instance *instance, bool with_lazy) {
+    /* Until fmi3ExitInitializationMode the states follow the parameters they start from. */
+    if (AK_MODEL.initialize != NULL &&
+        (instance->state & (AK3_STATE_INSTANTIATED | AK3_STATE_INITIALIZATION_MODE)) != 0 &&
+        AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
+        instance->evaluation_status = AK_EVAL_FAILED;
+        instance->outputs_stale = false;
+        return AK_EVAL_FAILED;
+    }
     const bool both = with_lazy && AK_MODEL.evaluate_all != NULL;
     instance->evaluation_status =
         both ? AK_MODEL.evaluate_all(&instance->data) : AK_MODEL.evaluate(&instance->data);

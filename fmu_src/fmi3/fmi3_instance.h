@@ -66,6 +66,16 @@ ak_eval_status ak3_instance_update_all_outputs(ak3_instance *instance);
  * successful one). */
 fmi3Status ak3_read_status(ak_eval_status status);
 
+/* True when the value reference is the first element of a continuous state (an FMI 3 array). */
+static inline bool ak3_is_state(unsigned int vr) {
+    for (int k = 0; k < AK_MODEL.n_states; k++) {
+        if (AK_MODEL.state_vrs[k] == vr) {
+            return true;
+        }
+    }
+    return false;
+}
+
 static inline void ak3_instance_inputs_changed(ak3_instance *instance) {
     instance->outputs_stale = true;
 }

@@ -164,7 +164,8 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance c, fmi3Boolean toleranceDefi
                 startTime);
         return fmi3Error;
     }
-    /* The map is algebraic: the tolerance has nothing to control. */
+    /* No model integrates with an error control (co-simulation steps are closed-form, model
+     * exchange is the importer's): the tolerance has nothing to control. */
     instance->time = startTime;
     instance->stop_time_defined = stopTimeDefined != fmi3False;
     instance->stop_time = stopTime;
@@ -176,6 +177,17 @@ fmi3Status fmi3ExitInitializationMode(fmi3Instance c) {
     ak3_instance *instance = c;
     if (!ak3_call_allowed(instance, AK3_EXIT_INITIALIZATION_MODE)) {
         return fmi3Error;
+    }
+    /* The states from the parameters: a refusal (logged by the model) leaves the instance in
+     * Initialization Mode, so that the importer can correct the parameters and call again. */
+    if (AK_MODEL.initialize != NULL) {
+        if (AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
+            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                    "fmi3ExitInitializationMode: the parameters give no initial state (see the "
+                    "message before); the instance stays in Initialization Mode");
+            return fmi3Error;
+        }
+        ak3_instance_inputs_changed(instance);
     }
     /* The outputs at the initial inputs; a failed evaluation is reported by the reads. */
     (void)ak3_instance_update_outputs(instance);

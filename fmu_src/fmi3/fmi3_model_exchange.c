@@ -1,12 +1,7 @@
-/* FMI 3.0 model exchange. The models have no event indicators; their outputs are algebraic
- * functions of their inputs, so no event ever happens and the integrator has nothing to
- * integrate.
- *
- * Continuous states: the functions below take their count from n_states(), 0 today. HOOKS (issue
- * 14): when models/model.h gets n_states, state_vrs, derivative_vrs and derivatives, n_states()
- * returns AK_MODEL.n_states, and the marked places copy values[state_vrs[k]] (get), store them
- * and mark the outputs stale (set), call AK_MODEL.derivatives and copy
- * values[derivative_vrs[k]] (derivatives), and give 1.0 per state (nominals). */
+/* FMI 3.0 model exchange. The models have no event indicators, so no event ever happens.
+ * Continuous states come from the model hooks (models/model.h): AK_MODEL.n_states (0 for the
+ * algebraic models), the states and their derivatives are the values at state_vrs[k] and
+ * derivative_vrs[k], AK_MODEL.derivatives computes the latter, state_nominals[k] the nominals. */
 #include <math.h>
 
 #include "fmi3Functions.h"
@@ -15,7 +10,7 @@
 #include "fmi3_state_machine.h"
 
 static size_t n_states(void) {
-    return 0; /* HOOK: (size_t)AK_MODEL.n_states */
+    return (size_t)AK_MODEL.n_states;
 }
 
 /* The caller's array must have exactly n_states() elements and be given when there are any. */
@@ -117,7 +112,22 @@ fmi3Status fmi3SetContinuousStates(fmi3Instance c, const fmi3Float64 continuousS
                             nContinuousStates)) {
         return fmi3Error;
     }
-    /* HOOK: check every value finite, then store values[state_vrs[k]] and mark outputs stale. */
+    for (size_t k = 0; k < nContinuousStates; k++) {
+        if (!isfinite(continuousStates[k])) {
+            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                    "fmi3SetContinuousStates: continuousStates[%zu] = %g (%s) is not finite; no "
+                    "state set",
+                    k, continuousStates[k], AK_MODEL.variables[AK_MODEL.state_vrs[k]].name);
+            return fmi3Error;
+        }
+    }
+    for (size_t k = 0; k < nContinuousStates; k++) {
+        double *value = &instance->data.values[AK_MODEL.state_vrs[k]];
+        if (*value != continuousStates[k]) {
+            *value = continuousStates[k];
+            ak3_instance_inputs_changed(instance);
+        }
+    }
     return fmi3OK;
 }
 
@@ -129,7 +139,12 @@ fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance c, fmi3Float64 derivat
         !states_array_valid(instance, self, derivatives, "derivatives", nContinuousStates)) {
         return fmi3Error;
     }
-    /* HOOK: AK_MODEL.derivatives(&instance->data), then copy values[derivative_vrs[k]]. */
+    if (nContinuousStates > 0) {
+        AK_MODEL.derivatives(&instance->data);
+    }
+    for (size_t k = 0; k < nContinuousStates; k++) {
+        derivatives[k] = instance->data.values[AK_MODEL.derivative_vrs[k]];
+    }
     return fmi3OK;
 }
 
@@ -142,7 +157,14 @@ fmi3Status fmi3GetContinuousStates(fmi3Instance c, fmi3Float64 continuousStates[
                             nContinuousStates)) {
         return fmi3Error;
     }
-    /* HOOK: copy values[state_vrs[k]]. */
+    /* In InitializationMode the states follow the parameters: bring them up to date. */
+    if (nContinuousStates > 0 && (instance->state & AK3_STATE_INITIALIZATION_MODE) != 0 &&
+        ak3_instance_update_outputs(instance) == AK_EVAL_FAILED) {
+        return fmi3Discard; /* the model logged why */
+    }
+    for (size_t k = 0; k < nContinuousStates; k++) {
+        continuousStates[k] = instance->data.values[AK_MODEL.state_vrs[k]];
+    }
     return fmi3OK;
 }
 
@@ -154,7 +176,9 @@ fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance c, fmi3Float64 nominal
         !states_array_valid(instance, self, nominals, "nominals", nContinuousStates)) {
         return fmi3Error;
     }
-    /* HOOK: nominals[k] = 1.0 (no nominal declared). */
+    for (size_t k = 0; k < nContinuousStates; k++) {
+        nominals[k] = AK_MODEL.state_nominals[k];
+    }
     return fmi3OK;
 }
 

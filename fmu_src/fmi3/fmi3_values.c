@@ -240,7 +240,9 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
             return fmi3Error;
         }
         const ak_variable *variable = &AK_MODEL.variables[vr[i]];
-        if (variable->causality == AK_CAUSALITY_OUTPUT) {
+        /* Outputs and locals (state derivatives, a model's memory) are the model's to compute. */
+        if (variable->causality == AK_CAUSALITY_OUTPUT ||
+            variable->causality == AK_CAUSALITY_LOCAL) {
             main = true;
             lazy = lazy || variable->group == AK_GROUP_LAZY;
         }
@@ -284,11 +286,17 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
             return fmi3Error;
         }
         const ak_variable *variable = &AK_MODEL.variables[vr[i]];
-        if (variable->causality == AK_CAUSALITY_OUTPUT) {
+        if (variable->causality == AK_CAUSALITY_OUTPUT ||
+            variable->causality == AK_CAUSALITY_LOCAL) {
             ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                    "fmi3SetFloat64: valueReferences[%zu] = %u is %s, an output: only inputs and "
+                    "fmi3SetFloat64: valueReferences[%zu] = %u is %s, %s %s%s: only inputs and "
                     "parameters can be set; no value set",
-                    i, vr[i], array->name);
+                    i, vr[i], array->name,
+                    variable->causality == AK_CAUSALITY_OUTPUT ? "an" : "a",
+                    ak_causality_name(variable->causality),
+                    ak3_is_state(vr[i]) ? " and a continuous state (fmi3SetContinuousStates sets "
+                                          "states in model exchange)"
+                                        : "");
             return fmi3Error;
         }
         total += array->n_elements;

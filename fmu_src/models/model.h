@@ -1,4 +1,4 @@
-/* The model descriptor: all that an FMI layer (fmi2/, later fmi3/) knows of a model, and all that
+/* The model descriptor: all that an FMI layer (fmi2/, fmi3/) knows of a model, and all that
  * a model knows of an instance. Each FMU binary is compiled with exactly one model folder, whose
  * model.c defines AK_MODEL; its variable table is generated from its description.py
  * (codegen/generate.py).
@@ -114,8 +114,8 @@ typedef struct {
                                double value[]);
     bool can_interpolate_inputs;
     /* True for a model whose evaluation can fail, or whose outputs depend on the path (the
-     * unwrapped angles of AttitudePropagator): fmi2DoStep then evaluates at the end of the
-     * step and returns fmi2Discard (StepFailed) when it fails. */
+     * unwrapped angles of AttitudePropagator): fmi2DoStep and fmi3DoStep then evaluate at the
+     * end of the step and return fmi2Discard (StepFailed) / fmi3Discard when it fails. */
     bool evaluate_in_step;
 
     /* Continuous states: 0 / NULL for a model without. The states and their derivatives are
@@ -130,9 +130,9 @@ typedef struct {
     /* Co-simulation: advances the states over h with the inputs and input_derivatives as given
      * (those at the step start); AK_EVAL_FAILED (logged) leaves them as they were. */
     ak_eval_status (*step)(ak_model_data *data, double h);
-    /* The states from the parameters: called before each evaluation until
-     * fmi2ExitInitializationMode, and there; AK_EVAL_FAILED (logged) when the parameters give
-     * no valid start, which leaves the states as they were. */
+    /* The states from the parameters: called at instantiation and reset, before each evaluation
+     * until fmi2ExitInitializationMode / fmi3ExitInitializationMode, and there; AK_EVAL_FAILED
+     * (logged) when the parameters give no valid start, which leaves the states as they were. */
     ak_eval_status (*initialize)(ak_model_data *data);
 } ak_model;
 

@@ -52,6 +52,38 @@ static fmi3Instance new_instance(log_counts *counts) {
                                        fmi3False, fmi3False, NULL, 0, counts, logger, NULL);
 }
 
+/* The first element of each input array (FMI 3 addresses arrays): theta, theta_dot, theta_ddot
+ * (0, 3, 6) of AngularKinematics, omega, omega_dot (0, 3) of AttitudePropagator; returns how
+ * many. All AK_MODEL.n_inputs input values are set at once. */
+static size_t input_arrays(fmi3ValueReference vr[AK_MAX_INPUTS]) {
+    size_t n = 0;
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
+        const char *bracket = strchr(AK_MODEL.variables[k].name, '[');
+        if (bracket == NULL || strcmp(bracket, "[1]") == 0) {
+            vr[n++] = (fmi3ValueReference)k;
+        }
+    }
+    return n;
+}
+
+/* The first element of each output array; *n_values gets their number of elements. */
+static size_t output_arrays(fmi3ValueReference arrays[AK_MAX_VARIABLES], size_t *n_values) {
+    size_t n_arrays = 0;
+    *n_values = 0;
+    for (int vr = AK_MODEL.n_inputs; vr < AK_MODEL.n_value_references; vr++) {
+        const ak_variable *v = ak_variable_of((unsigned int)vr);
+        if (v == NULL || v->causality != AK_CAUSALITY_OUTPUT) {
+            continue;
+        }
+        (*n_values)++;
+        const char *bracket = strchr(v->name, '[');
+        if (bracket == NULL || strcmp(bracket, "[1]") == 0 || strcmp(bracket, "[1,1]") == 0) {
+            arrays[n_arrays++] = (fmi3ValueReference)vr;
+        }
+    }
+    return n_arrays;
+}
+
 /* The inputs of an instance at a step: exact binary fractions in [-2, 2). */
 static void inputs_at(unsigned int instance, unsigned int step, double u[9]) {
     uint64_t x = 0x9e3779b97f4a7c15ULL * (instance + 1) ^ (0xbf58476d1ce4e5b9ULL * (step + 1));
@@ -85,25 +117,11 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
     CHECK(fmi3SetInt64(instance, &vr_sequence, 1, &sequence, 1) == fmi3OK, "set sequence");
     CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK, "enter");
     CHECK(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
-    const fmi3ValueReference inputs[3] = {0, 3, 6};
-    fmi3ValueReference outputs[AK_MAX_VARIABLES];
-    size_t n_outputs = 0;
-    for (int vr = AK_MODEL.n_inputs; vr < AK_MODEL.n_value_references; vr++) {
-        const ak_variable *v = ak_variable_of((unsigned int)vr);
-        if (v != NULL && v->causality == AK_CAUSALITY_OUTPUT) {
-            outputs[n_outputs++] = (fmi3ValueReference)vr;
-        }
-    }
-    /* FMI 3 addresses arrays: keep only the first element of each (consecutive runs). */
+    fmi3ValueReference inputs[AK_MAX_INPUTS];
+    const size_t n_in = input_arrays(inputs);
     fmi3ValueReference arrays[AK_MAX_VARIABLES];
-    size_t n_arrays = 0;
-    for (size_t i = 0; i < n_outputs; i++) {
-        const char *name = ak_variable_of(outputs[i])->name;
-        const char *bracket = strchr(name, '[');
-        if (bracket == NULL || strcmp(bracket, "[1]") == 0 || strcmp(bracket, "[1,1]") == 0) {
-            arrays[n_arrays++] = outputs[i];
-        }
-    }
+    size_t n_outputs = 0;
+    const size_t n_arrays = output_arrays(arrays, &n_outputs);
     uint64_t digest = 1469598103934665603ULL;
     double t = 0.0;
     fmi3FMUState state = NULL;
@@ -111,9 +129,11 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
         double u[9], y[AK_MAX_VARIABLES];
         inputs_at(id, step, u);
         if (AK_MODEL.evaluate_in_step) {
-            u[1] = 0.5 * u[1]; /* EulerRates: keep theta[2] in (-1, 1), away from singularities */
+            u[1] = 0.5 * u[1]; /* EulerRates: keep theta[2] in (-1, 1), away from singularities;
+                                * AttitudePropagator: a smaller omega[2] */
         }
-        CHECK(fmi3SetFloat64(instance, inputs, 3, u, 9) == fmi3OK, "set %u", step);
+        CHECK(fmi3SetFloat64(instance, inputs, n_in, u, (size_t)AK_MODEL.n_inputs) == fmi3OK,
+              "set %u", step);
         fmi3Boolean event, terminate, early;
         double last;
         const fmi3Status s = fmi3DoStep(instance, t, 0.001, fmi3True, &event, &terminate, &early, &last);
@@ -237,25 +257,28 @@ static void soak(unsigned long steps) {
     fmi3Instance instance = new_instance(&counts);
     CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK, "enter");
     CHECK(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
-    const fmi3ValueReference inputs[3] = {0, 3, 6};
-    const fmi3ValueReference first_outputs[4] = {9, 12, 15, 18};
-    double t = 0.0, y[12];
+    fmi3ValueReference inputs[AK_MAX_INPUTS];
+    const size_t n_in = input_arrays(inputs);
+    fmi3ValueReference outputs[AK_MAX_VARIABLES];
+    size_t n_values = 0;
+    const size_t n_outputs = output_arrays(outputs, &n_values);
+    double t = 0.0, y[AK_MAX_VARIABLES];
     for (unsigned long step = 0; step < steps; step++) {
         double u[9];
         inputs_at(7, (unsigned int)step, u);
         u[1] *= 0.5;
         fmi3Boolean b;
         double last;
-        if (fmi3SetFloat64(instance, inputs, 3, u, 9) != fmi3OK ||
+        if (fmi3SetFloat64(instance, inputs, n_in, u, (size_t)AK_MODEL.n_inputs) != fmi3OK ||
             fmi3DoStep(instance, t, 0.001, fmi3True, &b, &b, &b, &last) > fmi3Warning ||
-            fmi3GetFloat64(instance, first_outputs, 4, y, 12) > fmi3Warning) {
+            fmi3GetFloat64(instance, outputs, n_outputs, y, n_values) > fmi3Warning) {
             CHECK(0, "step %lu failed", step);
             break;
         }
         t = last;
-        for (int k = 0; k < 12; k++) {
+        for (size_t k = 0; k < n_values; k++) {
             if (!isfinite(y[k])) {
-                CHECK(0, "step %lu: output %d = %g", step, k, y[k]);
+                CHECK(0, "step %lu: output %zu = %g", step, k, y[k]);
                 break;
             }
         }

@@ -78,7 +78,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         double t;
         size_t count;
         fmi3FMUState *state = &states[byte(&r) & 1];
-        switch (byte(&r) % 20) {
+        switch (byte(&r) % 22) {
         case 0: fmi3SetFloat64(instance, vr, nvr, values, n); break;
         case 1: fmi3GetFloat64(instance, vr, nvr, values, n); break;
         case 2: fmi3SetInt64(instance, vr, nvr, ints, n); break;
@@ -110,6 +110,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         case 16: fmi3EnterContinuousTimeMode(instance); fmi3SetTime(instance, number(&r)); break;
         case 17: fmi3UpdateDiscreteStates(instance, &b[0], &b[1], &b[2], &b[3], &b[4], &t); break;
         case 18: fmi3GetNumberOfVariableDependencies(instance, vr[0], &count); break;
+        case 19: /* continuous states (AttitudePropagator has 4): counts 0 .. 5 */
+            fmi3SetContinuousStates(instance, values, n % 6);
+            fmi3GetContinuousStateDerivatives(instance, other, n % 6);
+            break;
+        case 20:
+            fmi3GetContinuousStates(instance, values, n % 6);
+            fmi3GetNominalsOfContinuousStates(instance, other, n % 6);
+            break;
         default: fmi3EnterEventMode(instance); fmi3CompletedIntegratorStep(instance, 1, &b[0], &b[1]); break;
         }
     }

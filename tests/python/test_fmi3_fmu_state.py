@@ -1,7 +1,8 @@
 """FMI 3 FMU state (canGetAndSetFMUState, canSerializeFMUState): a state got, or serialized and
-deserialized (also into another instance), brings back time, inputs, parameters and so the
-outputs bit for bit; the serialized form is self-contained, versioned and checksummed (660 bytes
-AngularKinematics, 292 EulerRates), and damaged, truncated, foreign (an FMI 2 state, the other
+deserialized (also into another instance), brings back time, inputs, parameters, continuous
+states (AttitudePropagator's q and its co-simulation memory) and so the outputs bit for bit; the
+serialized form is self-contained, versioned and checksummed (92 + 8 N bytes: 660
+AngularKinematics, 292 EulerRates, 564 AttitudePropagator), and damaged, truncated, foreign (an FMI 2 state, the other
 model's) or freed states are refused with a message, changing nothing."""
 import ctypes
 
@@ -9,9 +10,12 @@ import numpy as np
 import pytest
 
 from conftest import Instance
-from fmi3_support import ERROR, OK, Instance3
+from fmi3_support import MODELS, ERROR, OK, Instance3
 
-SIZES = {"AngularKinematics": 660, "EulerRates": 292}
+SIZES = {"AngularKinematics": 660, "EulerRates": 292, "AttitudePropagator": 564}
+# The two input arrays set before the first step, then changed.
+INPUTS = {"AngularKinematics": ("theta", "theta_dot"), "EulerRates": ("theta", "omega"),
+          "AttitudePropagator": ("omega", "omega_dot")}
 
 
 def get_state(instance):
@@ -42,24 +46,27 @@ def everything(instance):
 
 def started(model, sequence=11):
     instance = Instance3(model)
-    first = "theta_dot" if model == "AngularKinematics" else "omega"
+    zeroth, first = INPUTS[model]
     instance.initialize(parameters={"sequence": sequence},
-                        inputs={"theta": [0.4, 0.3, -0.2], first: [1.0, 2.0, 3.0]})
+                        inputs={zeroth: [0.4, 0.3, -0.2], first: [1.0, 2.0, 3.0]})
     assert instance.do_step(0.0, 0.25)[0] == OK
     return instance, first
 
 
-@pytest.mark.parametrize("model", ["AngularKinematics", "EulerRates"])
+@pytest.mark.parametrize("model", MODELS)
 def test_get_set_and_serialize_restore_bit_for_bit(model, report):
     instance, first = started(model)
+    zeroth = INPUTS[model][0]
     other = Instance3(model)
     try:
         state = get_state(instance)
         saved = everything(instance)
         data = serialize(instance, state)
-        assert len(data) == SIZES[model] and data[:8] == b"AKinFMU3"
+        assert len(data) == SIZES[model] == 92 + 8 * (max(instance.vr[n] + instance.size[n]
+                                                          for n in instance.vr if n != "time"))
+        assert data[:8] == b"AKinFMU3"
         # Move on: new inputs, a step.
-        assert instance.set({"theta": [1.0, -1.0, 0.5], first: [0.0, 0.0, 0.0]}) == OK
+        assert instance.set({zeroth: [1.0, -1.0, 0.5], first: [0.0, 0.0, 0.0]}) == OK
         assert instance.do_step(0.25, 0.5) == (OK, 0.75)
         assert everything(instance) != saved
         assert instance.call("fmi3SetFMUState", state) == OK
@@ -96,7 +103,7 @@ def damaged(data, model):
     ]
 
 
-@pytest.mark.parametrize("model", ["AngularKinematics", "EulerRates"])
+@pytest.mark.parametrize("model", MODELS)
 def test_damaged_or_foreign_states_refused_and_nothing_changed(model, unzipdir, model_description):
     instance, _ = started(model)
     other_model = Instance3("EulerRates" if model == "AngularKinematics" else "AngularKinematics")

@@ -1,7 +1,9 @@
 """The FMI 3.0 FMUs as files: fmpy validates them with no message; their variables are the
 arrays of the model descriptions with the FMI 2 names (no element suffix), value references
 (the first element's), units and display units; sequence is a fixed Enumeration parameter;
-<ModelStructure> lists every output with the union of its elements' FMI 2 dependencies; the FMU
+<ModelStructure> lists every output (and state derivative: AttitudePropagator's der(q), a local
+with derivative= its state q) with the union of its elements' FMI 2 dependencies, and as initial
+unknowns with a state replaced by the parameters its start comes from (q by q0); the FMU
 holds the three platforms' binaries, sources/ that fmpy compiles into a binary computing the same
 bits, documentation/index.html without outside links and terminalsAndIcons/icon.png."""
 import math
@@ -70,7 +72,24 @@ def test_every_output_in_model_structure_with_exact_dependencies(model):
         expected = sorted({first_vr[owner[d]] for s in m.scalars if s.base == name for d in s.depends})
         assert sorted(v.valueReference for v in listed[name].dependencies) == expected, name
         assert set(listed[name].dependenciesKind) == {"dependent"}
-    assert sorted(u.variable.name for u in md.initialUnknowns) == sorted(outputs)
+    derivatives = {e["name"]: e for e in m.arrays if "derivative_of" in e}
+    assert sorted(u.variable.name for u in md.derivatives) == sorted(derivatives)
+    for u in md.derivatives:
+        state = derivatives[u.variable.name]["derivative_of"]
+        assert u.variable.derivative.name == state and u.variable.causality == "local"
+        expected = sorted({first_vr[owner[d]] for s in m.scalars if s.base == u.variable.name
+                           for d in s.depends})
+        assert sorted(v.valueReference for v in u.dependencies) == expected
+    assert sorted(u.variable.name for u in md.initialUnknowns) == sorted(outputs + list(derivatives))
+    by_vr = m.scalars_by_vr
+    for u in md.initialUnknowns:
+        expected = sorted({first_vr[owner[k]] for s in m.scalars if s.base == u.variable.name
+                           for d in s.depends
+                           for k in (by_vr[d].initial_depends if by_vr[d].state else [d])})
+        assert sorted(v.valueReference for v in u.dependencies) == expected, u.variable.name
+    if m.states:  # AttitudePropagator: q from q0 alone, der(q) from omega and q0
+        initial = {u.variable.name: [v.name for v in u.dependencies] for u in md.initialUnknowns}
+        assert initial["q"] == ["q0"] and initial["der(q)"] == ["omega", "q0"]
 
 
 @pytest.mark.parametrize("model", MODELS)
@@ -83,7 +102,9 @@ def test_capability_flags(model):
         assert interface.get("canSerializeFMUState") == "true"
         assert interface.get("providesDirectionalDerivatives") == jacobian
         assert interface.get("providesAdjointDerivatives") == jacobian
-        assert interface.get("providesPerElementDependencies") == "true"
+        # the C table's per-element dependencies list inputs only: not declared with states
+        per_element = "false" if load(model).states else "true"
+        assert interface.get("providesPerElementDependencies") == per_element
     cs = root.find("CoSimulation")
     assert cs.get("canHandleVariableCommunicationStepSize") == "true"
     assert cs.get("maxOutputDerivativeOrder") == ("1" if model == "AngularKinematics" else "0")
@@ -115,9 +136,11 @@ def test_sources_compile_with_fmpy_and_compute_the_same_bits(model, tmp_path, re
     build_platform_binary(copy, build_dir=tmp_path, all_warnings=True,
                           cmake_options={"CMAKE_COMPILE_WARNING_AS_ERROR:BOOL": "ON"})
     assert (copy / "binaries" / "x86_64-linux" / f"{model}.so").is_file()
-    start = {"sequence": 7, "theta": [0.3, -0.4, 1.1]}
-    start.update({"theta_dot": [0.5, 0.25, -1.0]} if model == "AngularKinematics" else
-                 {"omega": [0.5, 0.25, -1.0]})
+    start = {"sequence": 7}
+    start.update({"theta": [0.3, -0.4, 1.1], "theta_dot": [0.5, 0.25, -1.0]}
+                 if model == "AngularKinematics" else
+                 {"theta": [0.3, -0.4, 1.1], "omega": [0.5, 0.25, -1.0]} if model == "EulerRates"
+                 else {"omega": [0.5, 0.25, -1.0], "q0": [0.5, 0.5, -0.5, 0.5]})
 
     def simulate(fmu):
         return simulate_fmu(str(fmu), stop_time=0.1, output_interval=0.01, start_values=start)

@@ -1,5 +1,6 @@
 """The FMI 3 binaries of the three platforms, proven by running them: our own FMI 3 importer
 (tools/fmi3_driver.c), built for each platform, drives the binary packaged in dist/fmi3/<Model>.fmu
+(AttitudePropagator too: its outputs come from the states fmi3DoStep integrates)
 through every sequence (and frame) and prints every output, directional, adjoint and output
 derivative as IEEE 754 bits. aarch64-linux (run under qemu-aarch64, cross-compiled with
 -ffp-contract=off) prints exactly what x86_64-linux prints. x86_64-windows (run under wine)

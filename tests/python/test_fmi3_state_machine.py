@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from fmi3_support import ERROR, OK, Instance3, doubles, fmu3_path, vrs
+from fmi3_support import MODELS, ERROR, OK, Instance3, doubles, fmu3_path, vrs
 
 CS_STATES = ["Instantiated", "Initialization Mode", "Step Mode", "Terminated"]
 ME_STATES = ["Instantiated", "Initialization Mode", "Event Mode", "Continuous-Time Mode",
@@ -138,18 +138,66 @@ def test_function_allowed_exactly_in_the_standard_states(function, fmi_type):
             instance.free()
 
 
-@pytest.mark.parametrize("model", ["AngularKinematics", "EulerRates"])
+@pytest.mark.parametrize("model", MODELS)
 @pytest.mark.parametrize("fmi_type", ["CoSimulation", "ModelExchange"])
 def test_fmpy_simulates_both_interfaces(model, fmi_type):
     theta = [0.3, -0.2, 0.9]
-    start = {"sequence": 13, "theta": theta}
+    start = ({"sequence": 13, "theta": theta} if model != "AttitudePropagator" else
+             {"sequence": 13, "omega": theta, "q0": [0.5, 0.5, 0.5, -0.5]})
     result = simulate_fmu(str(fmu3_path(model)), fmi_type=fmi_type, stop_time=0.5,
                           output_interval=0.1, start_values=start)
     assert len(result) == 6 and result["time"][-1] == pytest.approx(0.5)
-    first_output = "omega_fixed" if model == "AngularKinematics" else "theta_dot"
+    first_output = "theta_dot" if model == "EulerRates" else "omega_fixed"
     assert result[first_output].shape == (6, 3)
-    if model == "AngularKinematics":
-        assert np.allclose(result["q"][:, 0] ** 2 + (result["q"][:, 1:] ** 2).sum(axis=1), 1.0)
+    if model != "EulerRates":  # unit; AttitudePropagator's state q drifts under CVode (ME)
+        norm2 = result["q"][:, 0] ** 2 + (result["q"][:, 1:] ** 2).sum(axis=1)
+        assert np.allclose(norm2, 1.0, rtol=0, atol=1e-3 if model == "AttitudePropagator" else 1e-8)
+    if model == "AttitudePropagator":  # the state starts at q0 and moves (CVode or the step)
+        assert result["q"][0].tolist() == [0.5, 0.5, 0.5, -0.5]
+        assert not np.allclose(result["q"][-1], result["q"][0])
+
+
+# The continuous-state functions with AttitudePropagator's 4 states, by the standard (FMI 3.0,
+# section 3.2): (states where it is allowed, the call).
+STATE_FUNCTIONS = {
+    "fmi3GetNumberOfContinuousStates": (set(ME_STATES),
+                                        lambda i: i.call("fmi3GetNumberOfContinuousStates",
+                                                         ctypes.byref(ctypes.c_size_t()))),
+    "fmi3GetContinuousStates": (READ_ME, lambda i: i.call("fmi3GetContinuousStates",
+                                                          (ctypes.c_double * 4)(), 4)),
+    "fmi3SetContinuousStates": ({"Continuous-Time Mode"},
+                                lambda i: i.call("fmi3SetContinuousStates",
+                                                 doubles([0.5, 0.5, 0.5, 0.5]), 4)),
+    "fmi3GetContinuousStateDerivatives": ({"Event Mode", "Continuous-Time Mode", "Terminated"},
+                                          lambda i: i.call("fmi3GetContinuousStateDerivatives",
+                                                           (ctypes.c_double * 4)(), 4)),
+    "fmi3GetNominalsOfContinuousStates": ({"Instantiated"} | READ_ME,
+                                          lambda i: i.call("fmi3GetNominalsOfContinuousStates",
+                                                           (ctypes.c_double * 4)(), 4)),
+}
+
+
+@pytest.mark.parametrize("function", sorted(STATE_FUNCTIONS))
+def test_state_functions_with_states_allowed_exactly_in_the_standard_states(function):
+    allowed, make_call = STATE_FUNCTIONS[function]
+    for state in ME_STATES:
+        instance = Instance3("AttitudePropagator", fmi_type="ModelExchange")
+        try:
+            enter(instance, state, True)
+            status = make_call(instance)
+            if state in allowed:
+                assert status == OK, (function, state, instance.messages)
+                continue
+            assert status == ERROR, (function, state)
+            assert instance.errors()[-1].startswith(f"{function}: illegal call in state {state}")
+        finally:
+            instance.free()
+    cs = Instance3("AttitudePropagator")
+    try:
+        enter(cs, "Step Mode", False)
+        assert make_call(cs) == ERROR and "not available to this instance" in cs.errors()[-1]
+    finally:
+        cs.free()
 
 
 def test_reset_returns_to_instantiated_with_start_values():

@@ -194,9 +194,10 @@ static ak_eval_status step(ak_model_data *data, double h) {
     }
     if (!ak_attitude_step(frame_of(data), c, h, q, NULL)) {
         ak_model_log(data, AK_LOG_ERROR, AK_STATUS_ERROR,
-                     "fmi2DoStep: omega = (%g, %g, %g) over communicationStepSize = %g gives a "
+                     "%s: omega = (%g, %g, %g) over the communication step size %g gives a "
                      "rotation that is not finite; the state q is left as it was",
-                     v[AP_VR_OMEGA], v[AP_VR_OMEGA + 1], v[AP_VR_OMEGA + 2], h);
+                     AK_MODEL.model_identifier, v[AP_VR_OMEGA], v[AP_VR_OMEGA + 1],
+                     v[AP_VR_OMEGA + 2], h);
         return AK_EVAL_FAILED;
     }
     const bool first = derivatives_given && !history;
