@@ -193,7 +193,8 @@ static ak_eval_status step(ak_model_data *data, double h) {
         }
     }
     if (!ak_attitude_step(frame_of(data), c, h, q, NULL)) {
-        ak_model_log(data, AK_LOG_ERROR, AK_STATUS_ERROR,
+        /* Logged as the step's result: the layer discards the step (the instance stays usable). */
+        ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
                      "%s: omega = (%g, %g, %g) over the communication step size %g gives a "
                      "rotation that is not finite; the state q is left as it was",
                      AK_MODEL.model_identifier, v[AP_VR_OMEGA], v[AP_VR_OMEGA + 1],
