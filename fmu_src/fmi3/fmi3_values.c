@@ -141,6 +141,9 @@ static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values
     size_t total = 0;
     *lazy = false;
     *one_run = true;
+    if (nvr == 0) {
+        return false; /* nothing to read: the checked path answers it */
+    }
     for (size_t i = 0; i < nvr; i++) {
         const ak3_array *array = ak3_array_of(vr[i]);
         if (array == NULL || AK_MODEL.variables[vr[i]].causality != AK_CAUSALITY_OUTPUT) {
