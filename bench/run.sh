@@ -60,7 +60,8 @@ driver=build/bench/bench_fmu
 # The calls in one function of a binary, counted: "sincos@plt x3, ...".
 calls_in() {
   local calls
-  calls=$(objdump -d --no-show-raw-insn "$1" | awk "/<$2>:/,/^\$/" |
+  # Link-time optimization may rename a static function name.lto_priv.N.
+  calls=$(objdump -d --no-show-raw-insn "$1" | awk "/<$2(\\.lto_priv\\.[0-9]+)?>:/,/^\$/" |
     sed -n 's/.*call.*<\(.*\)>.*/\1/p' | sort | uniq -c |
     awk '{printf "%s%s x%s", sep, $2, $1; sep=", "}')
   echo "${calls:-none (function not found or no call)}"
@@ -77,9 +78,11 @@ machine() {
   echo "Date: $(date -u '+%Y-%m-%d %H:%M UTC'); load average: $(cut -d' ' -f1-3 /proc/loadavg)"
   if command -v objdump >/dev/null 2>&1; then
     # The driver's bare core is ak_general_angular_kinematics for body123, inlined into its
-    # timing loop; the FMU runs the same code through the model's evaluate and evaluate_lazy.
+    # timing loop; the FMU runs the same code through the model's evaluate, evaluate_all (every
+    # output after an input changed) and evaluate_lazy (the lazy group after a main read).
     echo "Calls in the driver's core loop time_core (core inlined): $(calls_in "$driver" time_core)"
     echo "Calls in the FMU's evaluate: $(calls_in "$fmu_so" evaluate)"
+    echo "Calls in the FMU's evaluate_all: $(calls_in "$fmu_so" evaluate_all)"
     echo "Calls in the FMU's evaluate_lazy: $(calls_in "$fmu_so" evaluate_lazy)"
   fi
 }

@@ -79,7 +79,7 @@ void ak_instance_clear_input_derivatives(ak_instance *instance) {
 
 /* Evaluates the main group, and the lazy group with it when with_lazy and the model can do both
  * at once; returns the evaluation's status. */
-static ak_eval_status evaluate(ak_instance *instance, bool with_lazy) {
+static ak_eval_status refresh_outputs(ak_instance *instance, bool with_lazy) {
     /* Until fmi2ExitInitializationMode the states follow the parameters they start from. */
     if (AK_MODEL.initialize != NULL &&
         (instance->state & (AK_STATE_INSTANTIATED | AK_STATE_INITIALIZATION_MODE)) != 0 &&
@@ -102,12 +102,12 @@ static ak_eval_status evaluate(ak_instance *instance, bool with_lazy) {
 }
 
 ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
-    return instance->outputs_stale ? evaluate(instance, false) : instance->evaluation_status;
+    return instance->outputs_stale ? refresh_outputs(instance, false) : instance->evaluation_status;
 }
 
 ak_eval_status ak_instance_update_all_outputs(ak_instance *instance) {
     const ak_eval_status status =
-        instance->outputs_stale ? evaluate(instance, true) : instance->evaluation_status;
+        instance->outputs_stale ? refresh_outputs(instance, true) : instance->evaluation_status;
     if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
         AK_MODEL.evaluate_lazy(&instance->data);
         instance->lazy_stale = false;

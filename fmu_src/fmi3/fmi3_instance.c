@@ -43,7 +43,7 @@ void ak3_instance_reset(ak3_instance *instance) {
 
 /* Evaluates the main group, and the lazy group with it when with_lazy and the model can do both
  * at once (as the FMI 2 layer). */
-static ak_eval_status evaluate(ak3_instance *instance, bool with_lazy) {
+static ak_eval_status refresh_outputs(ak3_instance *instance, bool with_lazy) {
     /* Until fmi3ExitInitializationMode the states follow the parameters they start from. */
     if (AK_MODEL.initialize != NULL &&
         (instance->state & (AK3_STATE_INSTANTIATED | AK3_STATE_INITIALIZATION_MODE)) != 0 &&
@@ -66,12 +66,12 @@ static ak_eval_status evaluate(ak3_instance *instance, bool with_lazy) {
 }
 
 ak_eval_status ak3_instance_update_outputs(ak3_instance *instance) {
-    return instance->outputs_stale ? evaluate(instance, false) : instance->evaluation_status;
+    return instance->outputs_stale ? refresh_outputs(instance, false) : instance->evaluation_status;
 }
 
 ak_eval_status ak3_instance_update_all_outputs(ak3_instance *instance) {
     const ak_eval_status status =
-        instance->outputs_stale ? evaluate(instance, true) : instance->evaluation_status;
+        instance->outputs_stale ? refresh_outputs(instance, true) : instance->evaluation_status;
     if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
         AK_MODEL.evaluate_lazy(&instance->data);
         instance->lazy_stale = false;
