@@ -53,10 +53,7 @@ void ak_instance_reset(ak_instance *instance) {
     if (AK_MODEL.initialize != NULL) {
         (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
     }
-    ak_instance_inputs_changed(instance);
-    instance->lazy_stale = true;
-    instance->evaluation_status = AK_EVAL_OK;
-    instance->evaluations = 0;
+    ak_outputs_reset(&instance->outputs);
 }
 
 bool ak_is_state(unsigned int vr) {
@@ -77,45 +74,32 @@ void ak_instance_clear_input_derivatives(ak_instance *instance) {
     instance->data.any_input_derivative = false;
 }
 
-/* Evaluates the main group, and the lazy group with it when with_lazy and the model can do both
- * at once; returns the evaluation's status. */
-static ak_eval_status refresh_outputs(ak_instance *instance, bool with_lazy) {
-    /* Until fmi2ExitInitializationMode the states follow the parameters they start from. */
-    if (AK_MODEL.initialize != NULL &&
-        (instance->state & (AK_STATE_INSTANTIATED | AK_STATE_INITIALIZATION_MODE)) != 0 &&
-        AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
-        instance->evaluation_status = AK_EVAL_FAILED;
-        instance->outputs_stale = false;
-        return AK_EVAL_FAILED;
-    }
-    const bool both = with_lazy && AK_MODEL.evaluate_all != NULL;
-    instance->evaluation_status =
-        both ? AK_MODEL.evaluate_all(&instance->data) : AK_MODEL.evaluate(&instance->data);
-    instance->outputs_stale = false;
-    instance->lazy_stale = !both || instance->evaluation_status == AK_EVAL_FAILED;
-    instance->evaluations++;
-    if (ak_log_on(instance, AK_LOG_CALLS)) {
-        ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu%s)",
-               instance->evaluations, both ? ", with the lazy outputs" : "");
-    }
-    return instance->evaluation_status;
-}
-
-ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
-    return instance->outputs_stale ? refresh_outputs(instance, false) : instance->evaluation_status;
-}
-
-ak_eval_status ak_instance_update_all_outputs(ak_instance *instance) {
+/* The outputs up to date (models/model_outputs.c), what ran traced in logCalls. */
+static ak_eval_status update(ak_instance *instance, bool with_lazy) {
+    unsigned int ran;
+    const bool in_initialization =
+        (instance->state & (AK_STATE_INSTANTIATED | AK_STATE_INITIALIZATION_MODE)) != 0;
     const ak_eval_status status =
-        instance->outputs_stale ? refresh_outputs(instance, true) : instance->evaluation_status;
-    if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
-        AK_MODEL.evaluate_lazy(&instance->data);
-        instance->lazy_stale = false;
-        if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_outputs_update(&instance->outputs, &instance->data, in_initialization, with_lazy, &ran);
+    if (ran != 0 && ak_log_on(instance, AK_LOG_CALLS)) {
+        if (ran & AK_RAN_MAIN) {
+            ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu%s)",
+                   instance->outputs.evaluations,
+                   (ran & AK_RAN_ALL) ? ", with the lazy outputs" : "");
+        }
+        if (ran & AK_RAN_LAZY) {
             ak_log(instance, AK_LOG_CALLS, fmi2OK, "lazy outputs evaluated");
         }
     }
     return status;
+}
+
+ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
+    return update(instance, false);
+}
+
+ak_eval_status ak_instance_update_all_outputs(ak_instance *instance) {
+    return update(instance, true);
 }
 
 fmi2Status ak_instance_read_status(const ak_instance *instance, ak_eval_status status) {

@@ -7,6 +7,7 @@
 
 #include "fmi2Functions.h"
 #include "model.h"
+#include "model_outputs.h"
 
 /* The FMI 2.0 co-simulation and model-exchange states, one bit each so that a set of them is a
  * mask. Instantiated, InitializationMode and Terminated are common to both interfaces; the
@@ -57,17 +58,9 @@ typedef struct ak_instance_s {
     unsigned char roles_before[AK_N_REAL_ROLES][AK_MAX_VARIABLES + 1];
     /* Values by value reference, input derivatives and the logger, as the model sees them. */
     ak_model_data data;
-    /* True when an input or parameter changed since the main output group was last computed;
-     * lazy_stale: when the main group was computed since the lazy group was, which is computed
-     * only when one of its values is read. */
-    bool outputs_stale;
-    bool lazy_stale;
-    /* Status of the last evaluation of the main group: on AK_EVAL_FAILED the outputs hold the
-     * values of the last successful one, and reading them returns fmi2Discard
-     * until an input changes. */
-    ak_eval_status evaluation_status;
-    /* How many times the core ran; reported in the logCalls trace. */
-    unsigned long evaluations;
+    /* When the outputs are computed (models/model_outputs.h); on a failed evaluation a read
+     * answers fmi2Discard until an input changes. */
+    ak_outputs outputs;
     /* FMU states made by this instance and not yet freed (fmi2_fmu_state.c). */
     struct ak_fmu_state_s *live_states;
 } ak_instance;
@@ -112,11 +105,9 @@ fmi2Status ak_instance_read_status(const ak_instance *instance, ak_eval_status s
 /* True when vr is one of the model's continuous states. */
 bool ak_is_state(unsigned int vr);
 
-/* Marks every output stale (an input or parameter changed): the main group directly, the lazy
- * group through it (every evaluation of the main group makes the lazy group stale), so that a
- * setter pays one store. */
+/* Marks every output stale (an input or parameter changed). */
 static inline void ak_instance_inputs_changed(ak_instance *instance) {
-    instance->outputs_stale = true;
+    ak_outputs_inputs_changed(&instance->outputs);
 }
 
 #endif

@@ -35,48 +35,29 @@ void ak3_instance_reset(ak3_instance *instance) {
     if (AK_MODEL.initialize != NULL) {
         (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
     }
-    instance->outputs_stale = true;
-    instance->lazy_stale = true;
-    instance->evaluation_status = AK_EVAL_OK;
-    instance->evaluations = 0;
+    ak_outputs_reset(&instance->outputs);
 }
 
-/* Evaluates the main group, and the lazy group with it when with_lazy and the model can do both
- * at once (as the FMI 2 layer). */
-static ak_eval_status refresh_outputs(ak3_instance *instance, bool with_lazy) {
-    /* Until fmi3ExitInitializationMode the states follow the parameters they start from. */
-    if (AK_MODEL.initialize != NULL &&
-        (instance->state & (AK3_STATE_INSTANTIATED | AK3_STATE_INITIALIZATION_MODE)) != 0 &&
-        AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
-        instance->evaluation_status = AK_EVAL_FAILED;
-        instance->outputs_stale = false;
-        return AK_EVAL_FAILED;
-    }
-    const bool both = with_lazy && AK_MODEL.evaluate_all != NULL;
-    instance->evaluation_status =
-        both ? AK_MODEL.evaluate_all(&instance->data) : AK_MODEL.evaluate(&instance->data);
-    instance->outputs_stale = false;
-    instance->lazy_stale = !both || instance->evaluation_status == AK_EVAL_FAILED;
-    instance->evaluations++;
-    if (ak3_log_on(instance, AK_LOG_CALLS)) {
+/* The outputs up to date (models/model_outputs.c), an evaluation traced in logCalls. */
+static ak_eval_status update(ak3_instance *instance, bool with_lazy) {
+    unsigned int ran;
+    const bool in_initialization =
+        (instance->state & (AK3_STATE_INSTANTIATED | AK3_STATE_INITIALIZATION_MODE)) != 0;
+    const ak_eval_status status =
+        ak_outputs_update(&instance->outputs, &instance->data, in_initialization, with_lazy, &ran);
+    if ((ran & AK_RAN_MAIN) && ak3_log_on(instance, AK_LOG_CALLS)) {
         ak3_log(instance, AK_LOG_CALLS, fmi3OK, "kinematics evaluated (evaluation %lu%s)",
-                instance->evaluations, both ? ", with the lazy outputs" : "");
+                instance->outputs.evaluations, (ran & AK_RAN_ALL) ? ", with the lazy outputs" : "");
     }
-    return instance->evaluation_status;
+    return status;
 }
 
 ak_eval_status ak3_instance_update_outputs(ak3_instance *instance) {
-    return instance->outputs_stale ? refresh_outputs(instance, false) : instance->evaluation_status;
+    return update(instance, false);
 }
 
 ak_eval_status ak3_instance_update_all_outputs(ak3_instance *instance) {
-    const ak_eval_status status =
-        instance->outputs_stale ? refresh_outputs(instance, true) : instance->evaluation_status;
-    if (instance->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
-        AK_MODEL.evaluate_lazy(&instance->data);
-        instance->lazy_stale = false;
-    }
-    return status;
+    return update(instance, true);
 }
 
 fmi3Status ak3_read_status(ak_eval_status status) {

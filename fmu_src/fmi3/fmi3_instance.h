@@ -7,6 +7,7 @@
 
 #include "fmi3Functions.h"
 #include "model.h"
+#include "model_outputs.h"
 
 /* The FMI 3.0 states (section 3.2 model exchange, 4.2 co-simulation), one bit each so that a set
  * of them is a mask. ConfigurationMode and ReconfigurationMode exist only for structural
@@ -41,12 +42,8 @@ typedef struct ak3_instance_s {
     /* Values by value reference (an array at values[vr ..]), and the logger, as the model sees
      * them. FMI 3 has no input derivatives: data.input_derivatives stay zero. */
     ak_model_data data;
-    /* As in the FMI 2 layer: outputs_stale after an input or parameter changed, lazy_stale after
-     * the main group was computed and the lazy group not. */
-    bool outputs_stale;
-    bool lazy_stale;
-    ak_eval_status evaluation_status;
-    unsigned long evaluations;
+    /* When the outputs are computed (models/model_outputs.h), as in the FMI 2 layer. */
+    ak_outputs outputs;
     /* FMU states made by this instance and not yet freed (fmi3_fmu_state.c). */
     struct ak3_fmu_state_s *live_states;
 } ak3_instance;
@@ -77,7 +74,7 @@ static inline bool ak3_is_state(unsigned int vr) {
 }
 
 static inline void ak3_instance_inputs_changed(ak3_instance *instance) {
-    instance->outputs_stale = true;
+    ak_outputs_inputs_changed(&instance->outputs);
 }
 
 #endif

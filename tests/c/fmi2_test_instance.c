@@ -105,8 +105,8 @@ bool ak_test_outputs_consistent(fmi2Component c) {
     for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
         fresh.log_enabled[category] = false;
     }
-    ak_eval_status expected_status = fresh.evaluation_status;
-    if (fresh.outputs_stale) {
+    ak_eval_status expected_status = fresh.outputs.status;
+    if (fresh.outputs.stale) {
         /* Until fmi2ExitInitializationMode the states follow the parameters they start from
          * (ak_instance_update_outputs): a model that cannot start from them fails the read. */
         const bool initializing =
