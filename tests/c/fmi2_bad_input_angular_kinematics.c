@@ -212,22 +212,5 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
       .values = (fmi2Real[1]){0}},
      fmi2Error,
      "fmi2GetRealOutputDerivatives: illegal call in state InitializationMode", false},
-
-    /* --- FMU state: messages naming the model or its state's size -------------------------- */
-    {STEP_COMPLETE, "fmi2SerializeFMUstate(c, state, bytes, 8)", AK_OP_SERIALIZE_FMU_STATE,
-     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error,
-     "fmi2SerializeFMUstate: size = 8 is too small; the state needs @STATE_BYTES@ "
-     "bytes (fmi2SerializedFMUstateSize)", .with_fmu_state = true},
-    {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, {0, 0, 0, 0, 0, 0, 0, 0}, 8, &state)",
-     AK_OP_DE_SERIALIZE_FMU_STATE,
-     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8, .out = (fmi2FMUstate[1]){NULL}}, fmi2Error,
-     "fmi2DeSerializeFMUstate: the 8 bytes are not an AngularKinematics FMU "
-     "state (too short for the header)", false},
-    {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, 64 bytes \"AKFMUSTA...\", 64, &state)",
-     AK_OP_DE_SERIALIZE_FMU_STATE,
-     {.bytes = (fmi2Byte[64]){"AKFMUSTATE"}, .n_bytes = 64, .out = (fmi2FMUstate[1]){NULL}},
-     fmi2Error,
-     "fmi2DeSerializeFMUstate: the 64 bytes are not an AngularKinematics "
-     "FMU state (wrong magic bytes)", false},
 };
 const size_t AK_N_MODEL_BAD_CALLS = sizeof AK_MODEL_BAD_CALLS / sizeof AK_MODEL_BAD_CALLS[0];

@@ -302,16 +302,7 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
      "fmi2SetRealInputDerivatives: derivative of order 1 of omega[1] = nan (vr[0] = 0) is not "
      "finite; no derivative set", false},
 
-    /* --- FMU state: messages naming the model or its state's size -------------------------- */
-    {STEP_COMPLETE, "fmi2SerializeFMUstate(c, state, bytes, 8)", AK_OP_SERIALIZE_FMU_STATE,
-     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error,
-     "fmi2SerializeFMUstate: size = 8 is too small; the state needs @STATE_BYTES@ "
-     "bytes (fmi2SerializedFMUstateSize)", .with_fmu_state = true},
-    {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, {0, 0, 0, 0, 0, 0, 0, 0}, 8, &state)",
-     AK_OP_DE_SERIALIZE_FMU_STATE,
-     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8, .out = (fmi2FMUstate[1]){NULL}}, fmi2Error,
-     "fmi2DeSerializeFMUstate: the 8 bytes are not an AttitudePropagator FMU state "
-     "(too short for the header)", false},
+    /* --- FMU state: a foreign state given to a model-exchange instance ------------------- */
     {EVENT_MODE, "fmi2DeSerializeFMUstate(c, 64 bytes \"AKFMUSTA...\", 64, &state)",
      AK_OP_DE_SERIALIZE_FMU_STATE,
      {.bytes = (fmi2Byte[64]){"AKFMUSTATE"}, .n_bytes = 64, .out = (fmi2FMUstate[1]){NULL}},

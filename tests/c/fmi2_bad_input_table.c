@@ -183,6 +183,21 @@ const ak_bad_call AK_BAD_CALLS[] = {
      {.n_bytes = 8, .out = (fmi2FMUstate[1]){NULL}}, fmi2Error, "fmi2DeSerializeFMUstate: serializedState is NULL", false},
     {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, bytes, 8, NULL)", AK_OP_DE_SERIALIZE_FMU_STATE,
      {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error, "fmi2DeSerializeFMUstate: FMUstate is NULL", false},
+    {STEP_COMPLETE, "fmi2SerializeFMUstate(c, state, bytes, 8)", AK_OP_SERIALIZE_FMU_STATE,
+     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8}, fmi2Error,
+     "fmi2SerializeFMUstate: size = 8 is too small; the state needs @STATE_BYTES@ "
+     "bytes (fmi2SerializedFMUstateSize)", .with_fmu_state = true},
+    {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, {0, 0, 0, 0, 0, 0, 0, 0}, 8, &state)",
+     AK_OP_DE_SERIALIZE_FMU_STATE,
+     {.bytes = (fmi2Byte[8]){0}, .n_bytes = 8, .out = (fmi2FMUstate[1]){NULL}}, fmi2Error,
+     "fmi2DeSerializeFMUstate: the 8 bytes are not an @MODEL@ FMU state "
+     "(too short for the header)", false},
+    {STEP_COMPLETE, "fmi2DeSerializeFMUstate(c, 64 bytes \"AKFMUSTA...\", 64, &state)",
+     AK_OP_DE_SERIALIZE_FMU_STATE,
+     {.bytes = (fmi2Byte[64]){"AKFMUSTATE"}, .n_bytes = 64, .out = (fmi2FMUstate[1]){NULL}},
+     fmi2Error,
+     "fmi2DeSerializeFMUstate: the 64 bytes are not an @MODEL@ FMU state "
+     "(wrong magic bytes)", false},
 
     /* --- model exchange (an instance created with fmi2ModelExchange); the rows marked
      * without_states_only hold for a model without continuous states ------------------------ */

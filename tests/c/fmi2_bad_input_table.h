@@ -13,8 +13,9 @@
 /* A bad call on an instance brought to state `in` (one of the AK_IN_ states, with AK_ME for a
  * model-exchange instance). */
 /* In call and message, the driver replaces @PAST@ with the model's number of value references (the
- * first one past its last), @LAST@ with its last value reference and @STATE_BYTES@ with the size of
- * its FMU state, 92 + 8 N + 16 I: a row stays true when a variable is added. */
+ * first one past its last), @LAST@ with its last value reference, @STATE_BYTES@ with the size of
+ * its FMU state, 92 + 8 N + 16 I, and @MODEL@ with its model identifier: a row stays true when a
+ * variable is added, and serves every model. */
 typedef struct {
     unsigned int in;
     const char *call; /* the call as the document shows it; c is the instance */

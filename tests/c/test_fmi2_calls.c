@@ -123,9 +123,13 @@ static void print_row(const char *state, const char *call, const char *status,
 /* A row's call or message with its placeholders (fmi2_bad_input_table.h) replaced by the numbers
  * of the model the program is built for. */
 static void expand(const char *text, char *out, size_t size) {
-    static const char *const names[] = {"@PAST@", "@LAST@", "@STATE_BYTES@"};
-    const long values[] = {AK_MODEL.n_value_references, AK_MODEL.n_value_references - 1L,
-                           92L + 8L * AK_MODEL.n_value_references + 16L * AK_MODEL.n_inputs};
+    static const char *const names[] = {"@PAST@", "@LAST@", "@STATE_BYTES@", "@MODEL@"};
+    char values[4][64];
+    snprintf(values[0], sizeof values[0], "%d", AK_MODEL.n_value_references);
+    snprintf(values[1], sizeof values[1], "%d", AK_MODEL.n_value_references - 1);
+    snprintf(values[2], sizeof values[2], "%d",
+             92 + 8 * AK_MODEL.n_value_references + 16 * AK_MODEL.n_inputs);
+    snprintf(values[3], sizeof values[3], "%s", AK_MODEL.model_identifier);
     size_t used = 0;
     out[0] = '\0';
     while (*text != '\0' && used + 1 < size) {
@@ -133,7 +137,7 @@ static void expand(const char *text, char *out, size_t size) {
         for (size_t k = 0; k < sizeof names / sizeof names[0] && !replaced; k++) {
             const size_t length = strlen(names[k]);
             if (strncmp(text, names[k], length) == 0) {
-                const int written = snprintf(out + used, size - used, "%ld", values[k]);
+                const int written = snprintf(out + used, size - used, "%s", values[k]);
                 used += written > 0 ? (size_t)written : 0;
                 used = used < size ? used : size - 1;
                 text += length;
