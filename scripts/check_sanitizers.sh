@@ -90,7 +90,7 @@ AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asa
   AK_FMU3_DIR="$PWD/build-asan/dist/fmi3" \
   AK_ATTITUDE_FMU="$PWD/build-asan/dist/AttitudePropagator.fmu" \
   LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)" \
-  ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest $suite -q -p no:cacheprovider \
+  ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest -n logical $suite -q -p no:cacheprovider \
   | tail -1
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"

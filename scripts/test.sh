@@ -22,12 +22,14 @@ bash scripts/setup.sh --with-wine
 bash scripts/setup_importers.sh # OpenJDK, Maven, the FMI4j driver (tests/python/test_fmi4j.py)
 [ -n "$quick" ] || bash scripts/setup_abuse_tools.sh
 export AK_SET_UP=1 # the scripts below skip their own set-up and build
+# pytest on every core (pytest-xdist); the two wine test files share one worker (xdist_group).
+PARALLEL="-n logical --dist loadgroup"
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure
 if [ -n "$quick" ]; then
-  .venv/bin/python -m pytest -m "not slow" "$@"
+  .venv/bin/python -m pytest $PARALLEL -m "not slow" "$@"
   exit
 fi
 bash bench/run.sh --quick
 bash scripts/test_abuse.sh
-.venv/bin/python -m pytest "$@"
+.venv/bin/python -m pytest $PARALLEL "$@"

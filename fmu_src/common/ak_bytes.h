@@ -32,6 +32,32 @@ static inline bool ak_same_double(double a, double b) {
     return x == y;
 }
 
+/* What ak_store_if_finite did. */
+typedef enum { AK_STORE_REFUSED, AK_STORE_SAME, AK_STORE_CHANGED } ak_store_result;
+
+/* The setters' usual path: stores n doubles of src into dst only if every one is finite
+ * (AK_STORE_REFUSED: one is NaN or infinite, nothing stored; the caller's checked path names it),
+ * and says whether any bit changed (same rule as ak_same_double). One pass without a branch per
+ * value, then one copy: this runs at every communication point of every master. */
+static inline ak_store_result ak_store_if_finite(double *dst, const double *src, size_t n) {
+    const uint64_t exponent = 0x7FF0000000000000u;
+    const uint64_t carry = 0x0010000000000000u; /* added to the exponent: reaches the sign bit
+                                                   only from all ones (Inf or NaN) */
+    uint64_t not_finite = 0, changed = 0;
+    for (size_t i = 0; i < n; i++) { /* and, add, xor, or: vectorizes on every target */
+        uint64_t s, d;
+        memcpy(&s, &src[i], sizeof s);
+        memcpy(&d, &dst[i], sizeof d);
+        not_finite |= (s & exponent) + carry;
+        changed |= s ^ d;
+    }
+    if ((not_finite >> 63) != 0) {
+        return AK_STORE_REFUSED;
+    }
+    memcpy(dst, src, n * sizeof *dst);
+    return changed != 0 ? AK_STORE_CHANGED : AK_STORE_SAME;
+}
+
 static inline void ak_put_u32(unsigned char *p, uint32_t x) {
     for (int i = 0; i < 4; i++) {
         p[i] = (unsigned char)(x >> (8 * i));

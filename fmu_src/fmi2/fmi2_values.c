@@ -202,6 +202,18 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         !arrays_given(instance, AK_FMI2_SET_REAL, nvr, vr, value)) {
         return fmi2Error;
     }
+    /* The usual set of a master: the first nvr inputs in value-reference order, untraced. */
+    if (nvr > 0 && nvr <= (size_t)AK_MODEL.n_inputs && !instance->data.any_input_derivative &&
+        memcmp(vr, EVERY_VALUE_REFERENCE, nvr * sizeof vr[0]) == 0 &&
+        !ak_log_on(instance, AK_LOG_CALLS)) {
+        const ak_store_result stored = ak_store_if_finite(instance->data.values, value, nvr);
+        if (stored == AK_STORE_CHANGED) {
+            ak_instance_inputs_changed(instance);
+        }
+        if (stored != AK_STORE_REFUSED) {
+            return fmi2OK;
+        }
+    }
     const bool usual = only_finite_inputs(vr, nvr, value);
     if (!usual && !check_each_real(instance, vr, nvr, value)) {
         return fmi2Error;

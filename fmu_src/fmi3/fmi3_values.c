@@ -172,19 +172,22 @@ static void copy_out(const ak3_instance *instance, const fmi3ValueReference vr[]
 }
 
 /* The usual set: arrays of inputs (value references 0 .. n_inputs - 1, each the first of its
- * array), exactly nValues elements, all finite. Anything else takes the checked path. */
-static bool usual_set(const fmi3ValueReference vr[], size_t nvr, const fmi3Float64 values[],
-                      size_t n_values) {
+ * array), exactly nValues elements; *one_run: the arrays follow each other in value-reference
+ * order, so their elements are consecutive values. Anything else takes the checked path. */
+static bool usual_set(const fmi3ValueReference vr[], size_t nvr, size_t n_values, bool *one_run) {
     size_t total = 0;
+    *one_run = true;
     for (size_t i = 0; i < nvr; i++) {
         if (vr[i] >= (fmi3ValueReference)AK_MODEL.n_inputs || AK3_ARRAYS[vr[i]].first_vr != vr[i]) {
             return false;
         }
+        *one_run &= vr[i] == vr[0] + total;
         total += AK3_ARRAYS[vr[i]].n_elements;
     }
-    if (total != n_values) {
-        return false; /* values[] holds nValues elements: read no further than it */
-    }
+    return nvr > 0 && total == n_values; /* values[] holds nValues: read no further than it */
+}
+
+static bool all_finite(const fmi3Float64 values[], size_t n_values) {
     bool finite = true;
     for (size_t k = 0; k < n_values; k++) {
         finite &= fabs(values[k]) <= DBL_MAX;
@@ -271,9 +274,21 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
     }
-    if (usual_set(vr, nvr, values, nValues) && !ak3_log_on(instance, AK_LOG_CALLS)) {
-        store_all(instance, vr, nvr, values);
-        return fmi3OK;
+    bool one_run;
+    if (usual_set(vr, nvr, nValues, &one_run) && !ak3_log_on(instance, AK_LOG_CALLS)) {
+        if (one_run) { /* one check-and-copy of consecutive values (ak_bytes.h) */
+            const ak_store_result stored =
+                ak_store_if_finite(&instance->data.values[vr[0]], values, nValues);
+            if (stored == AK_STORE_CHANGED) {
+                ak3_instance_inputs_changed(instance);
+            }
+            if (stored != AK_STORE_REFUSED) {
+                return fmi3OK;
+            }
+        } else if (all_finite(values, nValues)) {
+            store_all(instance, vr, nvr, values);
+            return fmi3OK;
+        }
     }
     size_t total = 0;
     for (size_t i = 0; i < nvr; i++) {

@@ -71,18 +71,20 @@ FMU_PATH = fmu_path_of("AngularKinematics")
 EULER_FMU_PATH = fmu_path_of("EulerRates")
 
 STATUS = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal", 5: "Pending"}
-FIGURES = pytest.StashKey[list]()
+FIGURE = "measured figure"
+FIGURES = []  # gathered from the test reports: with pytest-xdist (-n) they come from the workers
 
 
-def pytest_configure(config):
-    config.stash[FIGURES] = []
+def pytest_runtest_logreport(report):
+    if report.when == "teardown":  # the last report of a test carries every recorded property
+        FIGURES.extend(f"{report.nodeid}: {value}" for name, value in report.user_properties
+                       if name == FIGURE)
 
 
 def pytest_terminal_summary(terminalreporter, exitstatus, config):
-    figures = config.stash[FIGURES]
-    if figures:
+    if FIGURES:
         terminalreporter.section("measured figures")
-        for line in figures:
+        for line in FIGURES:
             terminalreporter.write_line(line)
 
 
@@ -90,7 +92,7 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config):
 def report(request):
     """Records a measured figure, printed at the end of the run."""
     def record(line):
-        request.config.stash[FIGURES].append(f"{request.node.nodeid}: {line}")
+        request.node.user_properties.append((FIGURE, line))
     return record
 
 
