@@ -52,6 +52,7 @@ set(AK_FMI3_HEADERS
   fmu_src/fmi3/fmi3_arrays.h
   fmu_src/fmi3/fmi3_values.h
   fmu_src/common/ak_bytes.h
+  fmu_src/common/ak_compiler.h
   fmu_src/models/model.h
   fmu_src/models/model_outputs.h
   fmu_src/models/log_categories.h)

@@ -24,7 +24,8 @@ FMI3_SOURCES = ["fmi3/fmi3_instance.c", "fmi3/fmi3_logging.c", "fmi3/fmi3_state_
                 "fmi3/fmi3_model_exchange.c", "fmi3/fmi3_derivatives.c",
                 "fmi3/fmi3_dependencies.c", "fmi3/fmi3_fmu_state.c", "fmi3/fmi3_unsupported.c"]
 FMI3_HEADERS = ["fmi3/fmi3_instance.h", "fmi3/fmi3_logging.h", "fmi3/fmi3_state_machine.h",
-                "fmi3/fmi3_arrays.h", "fmi3/fmi3_values.h", "common/ak_bytes.h", "models/model.h",
+                "fmi3/fmi3_arrays.h", "fmi3/fmi3_values.h", "common/ak_bytes.h",
+                "common/ak_compiler.h", "models/model.h",
                 "models/model_outputs.h", "models/log_categories.h"]
 
 
@@ -76,6 +77,40 @@ def arrays_c(model):
                      f"{n_elements(entry)}, {len(shape)}, {rows}, {cols}}},")
     lines += ["};", "", f"const int AK3_N_ARRAYS = {len(model.arrays)};",
               f"const unsigned int AK3_TIME_VALUE_REFERENCE = {TIME_VR};", ""]
+    return "\n".join(lines)
+
+
+def driver_models_c(models):
+    """The facts of each model that our FMI 3 master (tools/fmi3_driver.c) drives it by."""
+    lines = ["/* What tools/fmi3_driver.c knows of each model: its instantiation token and the FMI 3",
+             " * value references of its arrays.",
+             f" * {HEADER_NOTE.format(source='fmu_src/models/<Model>/description.py')} */",
+             '#include "fmi3_driver_models.h"', "",
+             "const driver_model DRIVER_MODELS[] = {"]
+
+    def vr_list(entries):
+        return "{" + ", ".join(str(e["vr"]) for e in entries) + "}"
+
+    for m in models:
+        inputs = [e for e in m.arrays if e["causality"] == "input"]
+        outputs = [e for e in m.arrays if e["causality"] == "output"]
+        state_bases = {s.base for s in m.states}
+        # Directional derivatives: with respect to the inputs and the continuous states.
+        knowns = inputs + [e for e in m.arrays if e["name"] in state_bases] \
+            if m.capabilities["provides_directional_derivative"] else []
+        parameters = {e["name"]: e["vr"] for e in m.arrays if e["causality"] == "parameter"}
+        lines += [f"    {{{c_string(m.name)}, {c_string(m.guid)},",
+                  f"     {vr_list(inputs)}, {len(inputs)}, "
+                  f"{sum(n_elements(e) for e in inputs)},",
+                  f"     {vr_list(outputs)}, "
+                  "{" + ", ".join(str(n_elements(e)) for e in outputs) + "}, "
+                  f"{len(outputs)}, {sum(n_elements(e) for e in outputs)},",
+                  f"     {parameters['sequence']}, {parameters.get('frame', 0)},",
+                  f"     {vr_list(knowns) if knowns else '{0}'}, {len(knowns)}, "
+                  f"{sum(n_elements(e) for e in knowns)},",
+                  f"     {int(m.capabilities['max_output_derivative_order'] > 0)}}},"]
+    lines += ["};", "", "const size_t N_DRIVER_MODELS = sizeof DRIVER_MODELS / sizeof DRIVER_MODELS[0];",
+              ""]
     return "\n".join(lines)
 
 

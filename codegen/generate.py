@@ -9,6 +9,7 @@
     cmake/generated.cmake                          version, models and source lists for CMake
     fmu_src/models/<Model>/fmi3/...                the FMI 3.0 files (codegen/fmi3.py)
     docs/fmi3_variables.md                         FMI 2 scalars -> FMI 3 arrays
+    tools/fmi3_driver_models.c                     what our FMI 3 master drives each model by
 
     python3 -m codegen.generate            write them
     python3 -m codegen.generate --check    exit 1 and name the stale files (tests run this)
@@ -329,8 +330,9 @@ def outputs():
         files[folder / "buildDescription.xml"] = fmi3.build_description(m, flat_fmi3_sources(m))
         files[folder / f"{m.name}_fmi3_arrays.c"] = fmi3.arrays_c(m)
         files[folder / "documentation" / "index.html"] = fmi3.documentation(m)
-    files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(
-        [m for m in models if m.name in project.FMI3_MODELS])
+    fmi3_models = [m for m in models if m.name in project.FMI3_MODELS]
+    files[ROOT / "tools" / "fmi3_driver_models.c"] = fmi3.driver_models_c(fmi3_models)
+    files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(fmi3_models)
     return files
 
 

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "fmi3FunctionTypes.h"
+#include "fmi3_driver_models.h"
 
 #ifdef _WIN32
 #include <windows.h>
@@ -84,31 +85,17 @@ static int load_api(void *library, fmi3_api *api) {
     return 1;
 }
 
-/* What the driver knows of each model (docs/fmi3_variables.md). Derivatives: of the first
- * n_unknowns outputs (n_rows elements) with respect to the knowns (n_columns elements). */
-typedef struct {
-    const char *name;
-    const char *token;
-    fmi3ValueReference inputs[3];
-    size_t n_inputs, n_input_values;
-    fmi3ValueReference outputs[10];
-    size_t n_outputs, n_output_values;
-    fmi3ValueReference sequence, frame; /* frame 0: none */
-    fmi3ValueReference knowns[3];
-    size_t n_knowns, n_columns, n_unknowns, n_rows; /* n_knowns 0: no derivatives */
-    int output_derivatives;
-} model_facts;
+/* The directional and adjoint derivatives are those of the first UNKNOWNS output arrays; the
+ * output derivatives those of the first OUTPUT_DERIVATIVES (omega and alpha). */
+enum { UNKNOWNS = 5, OUTPUT_DERIVATIVES = 4, MAX_VALUES = 64 };
 
-static const model_facts MODELS[] = {
-    {"AngularKinematics", "{c3391885-ba93-4824-bb36-df39703b63ee}", {0, 3, 6}, 3, 9,
-     {9, 12, 15, 18, 21, 30, 34, 43, 52, 61}, 10, 61, 70, 0, {0, 3, 6}, 3, 9, 5, 21, 1},
-    {"EulerRates", "{6f0d3c8e-2b1a-4e55-9a53-2f4c1d7e8b90}", {0, 3, 6}, 3, 9,
-     {9, 12, 15, 18, 21}, 5, 13, 22, 23, {0}, 0, 0, 0, 0, 0},
-    /* q, R, theta, theta_dot, omega_fixed, omega_body, alpha_fixed, alpha_body, distance; the
-     * knowns omega, omega_dot and the state q, the unknowns q, R, theta, theta_dot, omega_fixed */
-    {"AttitudePropagator", "{8b5e2f4a-7c13-4d9e-b0a6-51e3c9d2f7a8}", {0, 3}, 2, 6,
-     {6, 14, 23, 26, 29, 32, 35, 38, 41}, 9, 32, 43, 42, {0, 3, 6}, 3, 10, 5, 22, 0},
-};
+static size_t elements_of_first(const driver_model *m, size_t n_arrays) {
+    size_t n = 0;
+    for (size_t i = 0; i < n_arrays && i < m->n_outputs; i++) {
+        n += m->output_elements[i];
+    }
+    return n;
+}
 
 static uint64_t generator = 0x853c49e6748fea9bULL;
 
@@ -137,7 +124,7 @@ static void status(const char *call, fmi3Status s) {
     }
 }
 
-static void run_case(const fmi3_api *api, const model_facts *m, int64_t sequence, int64_t frame,
+static void run_case(const fmi3_api *api, const driver_model *m, int64_t sequence, int64_t frame,
                      int steps) {
     fmi3Instance instance = api->instantiate("driver", m->token, NULL, fmi3False, fmi3False,
                                              fmi3False, fmi3False, NULL, 0, NULL, NULL, NULL);
@@ -155,7 +142,7 @@ static void run_case(const fmi3_api *api, const model_facts *m, int64_t sequence
     status("exit", api->exit_initialization_mode(instance));
     double t = 0.0;
     for (int step = 0; step < steps; step++) {
-        double u[9], y[61];
+        double u[MAX_VALUES], y[MAX_VALUES];
         for (size_t k = 0; k < m->n_input_values; k++) {
             u[k] = next_input();
         }
@@ -167,25 +154,29 @@ static void run_case(const fmi3_api *api, const model_facts *m, int64_t sequence
         status("get", api->get_float64(instance, m->outputs, m->n_outputs, y, m->n_output_values));
         print_values("outputs", y, m->n_output_values);
         if (m->n_knowns > 0) {
-            double seed[61], sensitivity[61];
-            for (int k = 0; k < 61; k++) {
+            const size_t n_unknowns = m->n_outputs < UNKNOWNS ? m->n_outputs : UNKNOWNS;
+            const size_t n_rows = elements_of_first(m, UNKNOWNS);
+            double seed[MAX_VALUES], sensitivity[MAX_VALUES];
+            for (int k = 0; k < MAX_VALUES; k++) {
                 seed[k] = (double)(k + 1) * 0.25;
             }
             status("directional",
-                   api->directional(instance, m->outputs, m->n_unknowns, m->knowns, m->n_knowns,
-                                    seed, m->n_columns, sensitivity, m->n_rows));
-            print_values("directional", sensitivity, m->n_rows);
-            status("adjoint", api->adjoint(instance, m->outputs, m->n_unknowns, m->knowns,
-                                           m->n_knowns, seed, m->n_rows, sensitivity,
+                   api->directional(instance, m->outputs, n_unknowns, m->knowns, m->n_knowns,
+                                    seed, m->n_columns, sensitivity, n_rows));
+            print_values("directional", sensitivity, n_rows);
+            status("adjoint", api->adjoint(instance, m->outputs, n_unknowns, m->knowns,
+                                           m->n_knowns, seed, n_rows, sensitivity,
                                            m->n_columns));
             print_values("adjoint", sensitivity, m->n_columns);
         }
         if (m->output_derivatives) {
-            double sensitivity[12];
-            const fmi3Int32 orders[4] = {1, 1, 1, 1};
-            status("output derivatives",
-                   api->output_derivatives(instance, m->outputs, 4, orders, sensitivity, 12));
-            print_values("output derivatives", sensitivity, 12);
+            const size_t n = elements_of_first(m, OUTPUT_DERIVATIVES);
+            double sensitivity[MAX_VALUES];
+            const fmi3Int32 orders[OUTPUT_DERIVATIVES] = {1, 1, 1, 1};
+            status("output derivatives", api->output_derivatives(instance, m->outputs,
+                                                                 OUTPUT_DERIVATIVES, orders,
+                                                                 sensitivity, n));
+            print_values("output derivatives", sensitivity, n);
         }
     }
     status("terminate", api->terminate(instance));
@@ -197,10 +188,10 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: fmi3_driver LIBRARY MODEL [STEPS]\n");
         return 2;
     }
-    const model_facts *m = NULL;
-    for (size_t i = 0; i < sizeof MODELS / sizeof MODELS[0]; i++) {
-        if (strcmp(argv[2], MODELS[i].name) == 0) {
-            m = &MODELS[i];
+    const driver_model *m = NULL;
+    for (size_t i = 0; i < N_DRIVER_MODELS; i++) {
+        if (strcmp(argv[2], DRIVER_MODELS[i].name) == 0) {
+            m = &DRIVER_MODELS[i];
         }
     }
     const int steps = argc > 3 ? atoi(argv[3]) : 3;

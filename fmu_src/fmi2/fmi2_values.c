@@ -206,7 +206,12 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
     if (nvr > 0 && nvr <= (size_t)AK_MODEL.n_inputs && !instance->data.any_input_derivative &&
         memcmp(vr, EVERY_VALUE_REFERENCE, nvr * sizeof vr[0]) == 0 &&
         !ak_log_on(instance, AK_LOG_CALLS)) {
-        const ak_store_result stored = ak_store_if_finite(instance->data.values, value, nvr);
+        /* Every input at once is the usual set: with the count a link-time constant, the
+         * compiler unrolls the check and the copy instead of calling memcpy. */
+        const ak_store_result stored =
+            nvr == (size_t)AK_MODEL.n_inputs
+                ? ak_store_if_finite(instance->data.values, value, (size_t)AK_MODEL.n_inputs)
+                : ak_store_if_finite(instance->data.values, value, nvr);
         if (stored == AK_STORE_CHANGED) {
             ak_instance_inputs_changed(instance);
         }

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "ak_bytes.h"
+#include "ak_compiler.h"
 #include "fmi3Functions.h"
 #include "fmi3_values.h"
 
@@ -266,30 +267,12 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     return status;
 }
 
-fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
-                          const fmi3Float64 values[], size_t nValues) {
-    ak3_instance *instance = c;
+/* fmi3SetFloat64 of anything but the usual set: each argument checked and a bad one named. Out
+ * of line, so that the usual path stays a small function. */
+AK_NOINLINE static fmi3Status set_float64_checked(ak3_instance *instance,
+                                                  const fmi3ValueReference vr[], size_t nvr,
+                                                  const fmi3Float64 values[], size_t nValues) {
     const ak3_function self = AK3_SET_FLOAT64;
-    if (!ak3_call_allowed(instance, self) ||
-        !arguments_given(instance, self, nvr, vr, nValues, values)) {
-        return fmi3Error;
-    }
-    bool one_run;
-    if (usual_set(vr, nvr, nValues, &one_run) && !ak3_log_on(instance, AK_LOG_CALLS)) {
-        if (one_run) { /* one check-and-copy of consecutive values (ak_bytes.h) */
-            const ak_store_result stored =
-                ak_store_if_finite(&instance->data.values[vr[0]], values, nValues);
-            if (stored == AK_STORE_CHANGED) {
-                ak3_instance_inputs_changed(instance);
-            }
-            if (stored != AK_STORE_REFUSED) {
-                return fmi3OK;
-            }
-        } else if (all_finite(values, nValues)) {
-            store_all(instance, vr, nvr, values);
-            return fmi3OK;
-        }
-    }
     size_t total = 0;
     for (size_t i = 0; i < nvr; i++) {
         if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
@@ -350,6 +333,37 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     }
     store_all(instance, vr, nvr, values);
     return fmi3OK;
+}
+
+fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                          const fmi3Float64 values[], size_t nValues) {
+    ak3_instance *instance = c;
+    const ak3_function self = AK3_SET_FLOAT64;
+    if (!ak3_call_allowed(instance, self) ||
+        !arguments_given(instance, self, nvr, vr, nValues, values)) {
+        return fmi3Error;
+    }
+    bool one_run;
+    if (usual_set(vr, nvr, nValues, &one_run) && !ak3_log_on(instance, AK_LOG_CALLS)) {
+        if (one_run) { /* one check-and-copy of consecutive values (ak_bytes.h) */
+            double *target = &instance->data.values[vr[0]];
+            /* One vector of 3 is the usual set: with the count a constant, the compiler
+             * unrolls the check and the copy instead of calling memcpy. */
+            const ak_store_result stored = nValues == 3
+                                               ? ak_store_if_finite(target, values, 3)
+                                               : ak_store_if_finite(target, values, nValues);
+            if (stored == AK_STORE_CHANGED) {
+                ak3_instance_inputs_changed(instance);
+            }
+            if (stored != AK_STORE_REFUSED) {
+                return fmi3OK;
+            }
+        } else if (all_finite(values, nValues)) {
+            store_all(instance, vr, nvr, values);
+            return fmi3OK;
+        }
+    }
+    return set_float64_checked(instance, vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,

@@ -5,6 +5,7 @@ runs for each model (the `model` fixture); the byte layout and its messages are 
 AngularKinematics."""
 import ctypes
 import struct
+import xml.etree.ElementTree as ET
 import zlib
 
 import numpy as np
@@ -12,7 +13,7 @@ import pytest
 from fmpy.fmi2 import fmi2FMUstate
 
 import reference
-from conftest import fmu_state_size, value_references_of
+from conftest import description_path_of, fmu_state_size, value_references_of
 
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
 OTHER = dict(zip(reference.INPUT_NAMES, [-1.0, 1.5, 0.2, 4.0, 0.1, -0.3, 0.0, 9.0, -2.0]))
@@ -24,7 +25,7 @@ SIZE = fmu_state_size("AngularKinematics")
 DERIVATIVES = 88 + 8 * N_VALUES  # where the input derivatives begin
 CRC = SIZE - 4
 SEQUENCE = value_references_of("AngularKinematics")["sequence"]
-GUID = b"{c3391885-ba93-4824-bb36-df39703b63ee}"
+GUID = ET.parse(description_path_of("AngularKinematics")).getroot().get("guid").encode()
 
 
 def set_derivatives(instance, derivatives):
@@ -221,7 +222,7 @@ def bad_strings(data):
         "other GUID": (reseal(data[:16] + b"{00000000-0000-0000-0000-000000000000}\0\0" + data[56:]),
                        'fmi2DeSerializeFMUstate: the FMU state is of an FMU with GUID '
                        '"{00000000-0000-0000-0000-000000000000}", not this one\'s (AngularKinematics) '
-                       '"{c3391885-ba93-4824-bb36-df39703b63ee}"'),
+                       f'"{GUID.decode()}"'),
         "step in progress": (forged(data, 60, "<I", 1 << 3),
                              "fmi2DeSerializeFMUstate: the FMU state holds an impossible header "
                              "(state 0x8, time 0.2, stop time 10, stop time defined 1)"),
