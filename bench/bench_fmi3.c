@@ -10,7 +10,9 @@
  * evaluates. CPU time of the thread;
  * medians over the repeats, the ratios are medians of the per-repeat ratios.
  *
- * Usage: bench_fmi3 FMI2_SO FMI3_SO [STEPS [REPEATS]]   (bench/run.sh passes the build's) */
+ * Usage: bench_fmi3 FMI2_SO FMI3_SO [STEPS [REPEATS [core|fmi2|fmi3]]]   (bench/run.sh passes
+ * the build's). With a loop named, only that loop runs, once: bench/run.sh counts its
+ * instructions under callgrind. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, dlopen */
 
 #include <dlfcn.h>
@@ -168,6 +170,19 @@ int main(int argc, char **argv) {
     if (ak_bench_fill_inputs(input_table) != 0) {
         fprintf(stderr, "bench_fmi3: the input table has equal consecutive values\n");
         return 1;
+    }
+    if (argc > 5) { /* one loop alone */
+        const char *only = argv[5];
+        const double ns = strcmp(only, "core") == 0   ? time_core(steps)
+                          : strcmp(only, "fmi2") == 0 ? time_fmi2(fmi2, steps)
+                          : strcmp(only, "fmi3") == 0 ? time_fmi3(fmi3, steps)
+                                                      : -1.0;
+        if (ns < 0.0) {
+            fprintf(stderr, "bench_fmi3: unknown loop %s (core, fmi2 or fmi3)\n", only);
+            return 2;
+        }
+        printf("%s: %.1f ns/step\n", only, ns);
+        return 0;
     }
     double core[MAX_REPEATS], c2[MAX_REPEATS], c3[MAX_REPEATS], r2[MAX_REPEATS], r3[MAX_REPEATS];
     time_core(steps / 10); /* warm-up */

@@ -34,6 +34,8 @@ command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-x86
 command -v aarch64-linux-gnu-gcc >/dev/null 2>&1 || missing+=(gcc-aarch64-linux-gnu)
 [ -f /usr/aarch64-linux-gnu/lib/libc.so.6 ] || missing+=(libc6-dev-arm64-cross)
 command -v qemu-aarch64 >/dev/null 2>&1 || missing+=(qemu-user)
+# ccache: the build folders compile the same sources; a second run recompiles nothing unchanged.
+command -v ccache >/dev/null 2>&1 || missing+=(ccache)
 if [ "${1:-}" = "--with-wine" ]; then
   command -v wine64 >/dev/null 2>&1 || command -v wine >/dev/null 2>&1 ||
     [ -x /usr/lib/wine/wine64 ] || missing+=(wine64)
