@@ -9,7 +9,8 @@
 #   AK_FUZZ_MODELS=EulerRates bash scripts/fuzz.sh 300     one model only
 #
 # For each model, first every input of the corpus is replayed (a regression test), then one
-# fuzzing process runs for the given time. New inputs go to a scratch folder; with --keep the ones
+# fuzzing process runs for the given time; the model's FMI 3 fuzzer runs beside them (one core
+# each). New inputs go to a scratch folder; with --keep the ones
 # that add coverage are merged into the repository's corpus (commit them). A crashing input is
 # written to build-fuzz/crash-* and fails the run; replay it with
 #   AK_FUZZ_TRACE=1 build-fuzz/fuzz_fmi2 build-fuzz/crash-...
@@ -39,44 +40,53 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$scratch"' EXIT # a failure stops the fuzzer in the background too
+
+# The FMI 3 layer of a model: its own encoding (tests/c/fuzz_fmi3.c), fuzzed from scratch. It runs
+# in the background beside the model's FMI 2 fuzzer: libFuzzer uses one core, the machine has two.
+fuzz_fmi3() {
+  local model=$1
+  mkdir -p "$scratch/fmi3-$model"
+  "build-fuzz/fuzz_fmi3_$model" -max_total_time="$seconds" -print_final_stats=1 \
+    -artifact_prefix=build-fuzz/fmi3- "$scratch/fmi3-$model" >"build-fuzz/fuzz3-$model.log" 2>&1
+}
+
 for model in $models; do
   if [ "$model" = AngularKinematics ]; then fuzzer=build-fuzz/fuzz_fmi2; else fuzzer=build-fuzz/fuzz_fmi2_$model; fi
   if [ ! -x "$fuzzer" ]; then # AttitudePropagator: the FMI 2 abuse programs do not cover it yet
     echo "fuzz ($model): no FMI 2 fuzzer ($fuzzer); the FMI 3 layer only"
     fuzzer=
   fi
-  if [ -n "$fuzzer" ]; then
-  echo "fuzz ($model): replaying the $(ls "$corpus" | wc -l) inputs of $corpus"
-  if ! "$fuzzer" -runs=0 "$corpus" >"build-fuzz/replay-$model.log" 2>&1; then
-    tail -60 "build-fuzz/replay-$model.log"
-    echo "fuzz ($model): FAILED replaying the corpus"
-    exit 1
-  fi
-  grep -E "INITED|DONE" "build-fuzz/replay-$model.log"
-
-  mkdir -p "$scratch/$model"
-  echo "fuzz ($model): fuzzing for $seconds s"
-  "$fuzzer" -max_total_time="$seconds" -print_final_stats=1 \
-    -artifact_prefix=build-fuzz/ "$scratch/$model" "$corpus" >"build-fuzz/fuzz-$model.log" 2>&1 || {
-    tail -60 "build-fuzz/fuzz-$model.log"
-    echo "fuzz ($model): FAILED, crashing input in build-fuzz/"
-    exit 1
-  }
-  grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" \
-    "build-fuzz/fuzz-$model.log" | sed "s/^/    /"
-  echo "fuzz ($model): 0 crashes in $seconds s"
-  fi
-
-  # The FMI 3 layer: its own encoding (tests/c/fuzz_fmi3.c), fuzzed from scratch for the same time.
   echo "fuzz ($model, FMI 3): fuzzing for $seconds s"
-  mkdir -p "$scratch/fmi3-$model"
-  "build-fuzz/fuzz_fmi3_$model" -max_total_time="$seconds" -print_final_stats=1 \
-    -artifact_prefix=build-fuzz/fmi3- "$scratch/fmi3-$model" >"build-fuzz/fuzz3-$model.log" 2>&1 || {
+  fuzz_fmi3 "$model" &
+  fmi3_pid=$!
+  if [ -n "$fuzzer" ]; then
+    echo "fuzz ($model): replaying the $(ls "$corpus" | wc -l) inputs of $corpus"
+    if ! "$fuzzer" -runs=0 "$corpus" >"build-fuzz/replay-$model.log" 2>&1; then
+      tail -60 "build-fuzz/replay-$model.log"
+      echo "fuzz ($model): FAILED replaying the corpus"
+      exit 1
+    fi
+    grep -E "INITED|DONE" "build-fuzz/replay-$model.log"
+
+    mkdir -p "$scratch/$model"
+    echo "fuzz ($model): fuzzing for $seconds s"
+    "$fuzzer" -max_total_time="$seconds" -print_final_stats=1 \
+      -artifact_prefix=build-fuzz/ "$scratch/$model" "$corpus" >"build-fuzz/fuzz-$model.log" 2>&1 || {
+      tail -60 "build-fuzz/fuzz-$model.log"
+      echo "fuzz ($model): FAILED, crashing input in build-fuzz/"
+      exit 1
+    }
+    grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|^Done" \
+      "build-fuzz/fuzz-$model.log" | sed "s/^/    /"
+    echo "fuzz ($model): 0 crashes in $seconds s"
+  fi
+
+  if ! wait "$fmi3_pid"; then
     tail -60 "build-fuzz/fuzz3-$model.log"
     echo "fuzz ($model, FMI 3): FAILED, crashing input in build-fuzz/"
     exit 1
-  }
+  fi
   grep -E "^stat::(number_of_executed_units|new_units_added)" "build-fuzz/fuzz3-$model.log" | sed "s/^/    /"
   echo "fuzz ($model, FMI 3): 0 crashes in $seconds s"
 
