@@ -40,7 +40,7 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 scratch=$(mktemp -d)
-trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$scratch"' EXIT # a failure stops the fuzzer in the background too
+trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$scratch"' EXIT # a failure stops the fuzzer in the background too
 
 # The FMI 3 layer of a model: its own encoding (tests/c/fuzz_fmi3.c), fuzzed from scratch. It runs
 # in the background beside the model's FMI 2 fuzzer: libFuzzer uses one core, the machine has two.
