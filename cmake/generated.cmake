@@ -13,7 +13,8 @@ set(AK_CORE_HEADERS
   fmu_src/core/attitude.h)
 set(AK_MODEL_COMMON_SOURCES
   fmu_src/models/model_log.c
-  fmu_src/models/model_outputs.c)
+  fmu_src/models/model_outputs.c
+  fmu_src/models/model_state_image.c)
 set(AK_FMI2_SOURCES
   fmu_src/fmi2/fmi2_instance.c
   fmu_src/fmi2/fmi2_logging.c
@@ -30,8 +31,10 @@ set(AK_FMI2_HEADERS
   fmu_src/fmi2/fmi2_state_machine.h
   fmu_src/fmi2/fmi2_derivatives.h
   fmu_src/common/ak_bytes.h
+  fmu_src/common/ak_compiler.h
   fmu_src/models/model.h
   fmu_src/models/model_outputs.h
+  fmu_src/models/model_state_image.h
   fmu_src/models/log_categories.h)
 set(AK_FMI3_SOURCES
   fmu_src/fmi3/fmi3_instance.c
@@ -55,6 +58,7 @@ set(AK_FMI3_HEADERS
   fmu_src/common/ak_compiler.h
   fmu_src/models/model.h
   fmu_src/models/model_outputs.h
+  fmu_src/models/model_state_image.h
   fmu_src/models/log_categories.h)
 set(AK_FMI3_MODELS AngularKinematics EulerRates AttitudePropagator)
 set(AK_FMI3_ARRAYS_AngularKinematics

@@ -26,7 +26,7 @@ FMI3_SOURCES = ["fmi3/fmi3_instance.c", "fmi3/fmi3_logging.c", "fmi3/fmi3_state_
 FMI3_HEADERS = ["fmi3/fmi3_instance.h", "fmi3/fmi3_logging.h", "fmi3/fmi3_state_machine.h",
                 "fmi3/fmi3_arrays.h", "fmi3/fmi3_values.h", "common/ak_bytes.h",
                 "common/ak_compiler.h", "models/model.h",
-                "models/model_outputs.h", "models/log_categories.h"]
+                "models/model_outputs.h", "models/model_state_image.h", "models/log_categories.h"]
 
 
 def c_string(text):

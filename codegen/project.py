@@ -69,13 +69,15 @@ CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c",
                 "core/kinematics_general_jacobian.c", "core/attitude.c"]
 CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h",
                 "core/kinematics_general_jacobian.h", "core/attitude.h"]
-MODEL_SOURCES = ["models/model_log.c", "models/model_outputs.c"]  # beside every model
+# beside every model
+MODEL_SOURCES = ["models/model_log.c", "models/model_outputs.c", "models/model_state_image.c"]
 FMI2_SOURCES = ["fmi2/fmi2_instance.c", "fmi2/fmi2_logging.c", "fmi2/fmi2_state_machine.c",
                 "fmi2/fmi2_lifecycle.c", "fmi2/fmi2_values.c", "fmi2/fmi2_cosimulation.c",
                 "fmi2/fmi2_model_exchange.c", "fmi2/fmi2_derivatives.c", "fmi2/fmi2_fmu_state.c"]
 FMI2_HEADERS = ["fmi2/fmi2_instance.h", "fmi2/fmi2_logging.h", "fmi2/fmi2_state_machine.h",
-                "fmi2/fmi2_derivatives.h", "common/ak_bytes.h", "models/model.h",
-                "models/model_outputs.h", "models/log_categories.h"]
+                "fmi2/fmi2_derivatives.h", "common/ak_bytes.h", "common/ak_compiler.h",
+                "models/model.h",
+                "models/model_outputs.h", "models/model_state_image.h", "models/log_categories.h"]
 
 # The models, each a folder fmu_src/models/<name>/ with description.py.
 MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator"]

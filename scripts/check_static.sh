@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Static analysis; any finding fails the run.
 # - cppcheck (Debian's package), once per model over the sources of its binary as one program:
-#   core, FMI layer, models/model_log.c, models/model_outputs.c and the model's folder (which defines AK_MODEL);
+#   core, FMI layer, models/model_*.c (what every model shares) and the model's folder (which defines AK_MODEL);
 # - cppcheck's unusedFunction over the sources of every model at once (a core function one model
 #   does not call may serve another), exempting by name only the FMI 2.0 entry points;
 # - GCC's -fanalyzer over every .c file of fmu_src/, with each model's include folders.
@@ -15,7 +15,7 @@ fi
 headers=$(.venv/bin/python -c "import fmpy, os; print(os.path.join(os.path.dirname(fmpy.__file__), 'c-code'))")
 read -r -a models <<<"$(.venv/bin/python -c "from codegen.project import MODELS; print(' '.join(MODELS))")"
 includes=(-I fmu_src/core -I fmu_src/models -I fmu_src/fmi2 -I fmu_src/common -I "$headers")
-common=(fmu_src/core/*.c fmu_src/fmi2/*.c fmu_src/models/model_log.c fmu_src/models/model_outputs.c)
+common=(fmu_src/core/*.c fmu_src/fmi2/*.c fmu_src/models/model_*.c)
 cppcheck --version
 
 for model in "${models[@]}"; do
@@ -81,7 +81,7 @@ for model in "${models[@]}"; do
   cppcheck --enable=all --std=c11 --error-exitcode=1 --inline-suppr --quiet \
     --suppress=missingIncludeSystem --suppress=ConfigurationNotChecked --suppress=unusedFunction \
     "${fmi3_includes[@]}" \
-    fmu_src/fmi3 "fmu_src/models/$model/fmi3" fmu_src/core/*.c fmu_src/models/model_log.c fmu_src/models/model_outputs.c \
+    fmu_src/fmi3 "fmu_src/models/$model/fmi3" fmu_src/core/*.c fmu_src/models/model_*.c \
     "fmu_src/models/$model"/*.c
   for source in fmu_src/fmi3/*.c fmu_src/models/"$model"/fmi3/*.c; do
     gcc -std=c11 -fanalyzer -O1 -Wall -Wextra -Werror "${fmi3_includes[@]}" -c "$source" -o /dev/null
@@ -91,6 +91,6 @@ done
 cppcheck --enable=unusedFunction --std=c11 --error-exitcode=1 --inline-suppr --quiet \
   --suppress=missingIncludeSystem --suppress-xml="$suppressions" \
   -I fmu_src/core -I fmu_src/models -I fmu_src/fmi3 -I fmu_src/common -I "$headers" \
-  "${model_folders[@]}" fmu_src/core/*.c fmu_src/models/model_log.c fmu_src/models/model_outputs.c fmu_src/fmi3/*.c \
+  "${model_folders[@]}" fmu_src/core/*.c fmu_src/models/model_*.c fmu_src/fmi3/*.c \
   fmu_src/models/*/*.c fmu_src/models/*/fmi3/*.c
 echo "check_static: cppcheck unusedFunction: 0 findings in the FMI 3 build (exempt by name: $(grep -c '<symbolName>' "$suppressions") symbols, each with its reason)"

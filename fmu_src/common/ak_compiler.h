@@ -1,4 +1,5 @@
-/* Compiler hints of the FMI layers, empty where the compiler has no such attribute. */
+/* Compiler hints of the FMI layers and the models, empty where the compiler has no such
+ * attribute. */
 #ifndef ANGULAR_KINEMATICS_AK_COMPILER_H
 #define ANGULAR_KINEMATICS_AK_COMPILER_H
 
@@ -9,6 +10,16 @@
 #define AK_NOINLINE __attribute__((noinline))
 #else
 #define AK_NOINLINE
+#endif
+
+/* printf-style arguments, checked by the compiler. mingw-w64 builds use its C99 printf
+ * (__USE_MINGW_ANSI_STDIO=1, set by CMakeLists.txt), not msvcrt's: %zu is fine there too. */
+#if defined(__MINGW32__)
+#define AK_PRINTF_FORMAT(f, a) __attribute__((format(gnu_printf, f, a)))
+#elif defined(__GNUC__)
+#define AK_PRINTF_FORMAT(f, a) __attribute__((format(printf, f, a)))
+#else
+#define AK_PRINTF_FORMAT(f, a)
 #endif
 
 #endif

@@ -4,16 +4,9 @@
 
 #include <stdbool.h>
 
+#include "ak_compiler.h"
 #include "fmi2_instance.h"
 
-#if defined(__MINGW32__)
-/* mingw-w64 builds use its C99 printf (__USE_MINGW_ANSI_STDIO=1, set by CMakeLists.txt), not msvcrt's. */
-#define AK_PRINTF_FORMAT(f, a) __attribute__((format(gnu_printf, f, a)))
-#elif defined(__GNUC__)
-#define AK_PRINTF_FORMAT(f, a) __attribute__((format(printf, f, a)))
-#else
-#define AK_PRINTF_FORMAT(f, a)
-#endif
 
 /* True when a message of this category reaches the master. Inline, so that the calls of every
  * communication point (set, step, get) ask it before ak_log: with the trace off they pay a load

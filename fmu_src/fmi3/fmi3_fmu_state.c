@@ -1,92 +1,47 @@
 /* FMI 3.0 FMU state: get, set, free, serialize, deserialize (canGetAndSetFMUState,
  * canSerializeFMUState). As in FMI 2, a state holds its serialized form: one layout, one
- * validator. Layout (FMI 3 format version 1), little-endian, no pointers; N is the model's number
- * of value references (71 AngularKinematics, 25 EulerRates):
- *
- *   offset size  field
- *        0    8  magic "AKinFMU3" (the FMI 2 states' is "AKinFMUs": neither reads the other)
- *        8    4  format version (1)
- *       12    4  total size in bytes (92 + 8 N: 660 AngularKinematics, 292 EulerRates)
- *       16   40  instantiation token of the FMU, NUL-padded
- *       56    4  interface of the instance (0 model exchange, 1 co-simulation)
- *       60    4  state-machine state (one ak3_state bit)
- *       64    8  time
- *       72    8  stop time
- *       80    4  stop time defined (0 or 1)
- *       84    4  reserved, 0
- *       88  8 N  the values, by value reference
- *     88+8N   4  CRC-32 of the bytes before it
+ * validator, the byte image of models/model_state_image.h with magic "AKinFMU3" (the FMI 2
+ * states' is "AKinFMUs": neither reads the other), format version 1 and no input derivatives
+ * (FMI 3 co-simulation has none): 92 + 8 N bytes for N value references (660 AngularKinematics,
+ * 292 EulerRates).
  *
  * The instance name, the logger and the logging settings belong to the instance and stay as
  * they are when a state is set. A byte string with another length, magic, version or token, a
  * bad checksum or impossible values is refused with fmi3Error and a message; nothing changes. */
-#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
-#include "ak_bytes.h"
 #include "fmi3Functions.h"
 #include "fmi3_instance.h"
 #include "fmi3_logging.h"
 #include "fmi3_state_machine.h"
+#include "model_state_image.h"
 
-#define STATE_MAGIC "AKinFMU3"
-#define STATE_FORMAT_VERSION 1u
-#define TOKEN_FIELD 40
-
-enum {
-    OFFSET_MAGIC = 0,
-    OFFSET_VERSION = 8,
-    OFFSET_SIZE = 12,
-    OFFSET_TOKEN = 16,
-    OFFSET_INTERFACE = 56,
-    OFFSET_STATE = 60,
-    OFFSET_TIME = 64,
-    OFFSET_STOP_TIME = 72,
-    OFFSET_STOP_TIME_DEFINED = 80,
-    OFFSET_RESERVED = 84,
-    OFFSET_VALUES = 88,
-    STATE_MAX_SIZE = OFFSET_VALUES + 8 * AK_MAX_VARIABLES + 4
-};
-
-static size_t offset_checksum(void) {
-    return (size_t)OFFSET_VALUES + 8u * (size_t)AK_MODEL.n_value_references;
-}
+static const ak_state_format FORMAT = {"AKinFMU3", 1u, "FMI 3 FMU state", "instantiationToken",
+                                       false};
 
 static size_t state_size(void) {
-    return offset_checksum() + 4u;
+    return ak_state_image_size(&FORMAT);
 }
 
 /* A state the importer gives back is looked up in the instance's list by address, never
  * dereferenced first. */
 struct ak3_fmu_state_s {
     struct ak3_fmu_state_s *next;
-    unsigned char bytes[STATE_MAX_SIZE];
+    unsigned char bytes[AK_STATE_IMAGE_MAX_SIZE];
 };
 typedef struct ak3_fmu_state_s ak3_fmu_state;
 
 typedef struct {
-    ak3_state state;
-    double time;
-    bool stop_time_defined;
-    double stop_time;
+    ak_state_header header;
     double values[AK_MAX_VARIABLES];
 } ak3_state_content;
 
-static void encode(const ak3_instance *instance, unsigned char bytes[STATE_MAX_SIZE]) {
-    memset(bytes, 0, state_size());
-    memcpy(bytes + OFFSET_MAGIC, STATE_MAGIC, 8);
-    ak_put_u32(bytes + OFFSET_VERSION, STATE_FORMAT_VERSION);
-    ak_put_u32(bytes + OFFSET_SIZE, (uint32_t)state_size());
-    memcpy(bytes + OFFSET_TOKEN, AK_MODEL.guid, strlen(AK_MODEL.guid));
-    ak_put_u32(bytes + OFFSET_INTERFACE, (uint32_t)instance->interface);
-    ak_put_u32(bytes + OFFSET_STATE, (uint32_t)instance->state);
-    ak_put_f64(bytes + OFFSET_TIME, instance->time);
-    ak_put_f64(bytes + OFFSET_STOP_TIME, instance->stop_time);
-    ak_put_u32(bytes + OFFSET_STOP_TIME_DEFINED, instance->stop_time_defined ? 1u : 0u);
-    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
-        ak_put_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr, instance->data.values[vr]);
-    }
-    ak_put_u32(bytes + offset_checksum(), ak_crc32(bytes, offset_checksum()));
+static void encode(const ak3_instance *instance, unsigned char bytes[AK_STATE_IMAGE_MAX_SIZE]) {
+    const ak_state_header header = {(uint32_t)instance->interface, (uint32_t)instance->state,
+                                    instance->time, instance->stop_time,
+                                    instance->stop_time_defined};
+    ak_state_image_write(&FORMAT, &header, &instance->data, bytes);
 }
 
 /* The states an instance of an interface can be in (Configuration and Reconfiguration Mode are
@@ -100,48 +55,14 @@ static bool state_possible(uint32_t state, uint32_t interface) {
     return state != 0 && (state & (state - 1)) == 0 && (state & ~allowed) == 0;
 }
 
-static bool header_valid(const ak3_instance *instance, const char *name, const unsigned char *bytes,
-                         size_t size) {
-    if (size < OFFSET_TOKEN || memcmp(bytes + OFFSET_MAGIC, STATE_MAGIC, 8) != 0) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: the %zu bytes are not an %s FMI 3 FMU state (%s)",
-                name, size, AK_MODEL.model_identifier,
-                size < OFFSET_TOKEN ? "too short for the header" : "wrong magic bytes");
+/* Checks a byte string from its length to its last value and decodes it; logs why not. */
+static bool decode(const ak3_instance *instance, ak3_function function, const unsigned char *bytes,
+                   size_t size, ak3_state_content *content) {
+    const char *name = ak3_function_name(function);
+    if (!ak_state_image_check(&FORMAT, &instance->data, name, bytes, size, &content->header)) {
         return false;
     }
-    const uint32_t version = ak_get_u32(bytes + OFFSET_VERSION);
-    if (version != STATE_FORMAT_VERSION) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: FMU state format version %u is not supported (this binary reads version %u)",
-                name, version, STATE_FORMAT_VERSION);
-        return false;
-    }
-    const uint32_t declared = ak_get_u32(bytes + OFFSET_SIZE);
-    if (size != state_size() || declared != state_size()) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: the FMU state is %zu bytes long and declares %u bytes; %s's has %zu bytes "
-                "(truncated or extended)",
-                name, size, declared, AK_MODEL.model_identifier, state_size());
-        return false;
-    }
-    const uint32_t stored = ak_get_u32(bytes + offset_checksum());
-    const uint32_t computed = ak_crc32(bytes, offset_checksum());
-    if (stored != computed) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: the FMU state is corrupt: its CRC-32 is 0x%08x, the bytes give 0x%08x", name,
-                stored, computed);
-        return false;
-    }
-    char token[TOKEN_FIELD + 1];
-    memcpy(token, bytes + OFFSET_TOKEN, TOKEN_FIELD);
-    token[TOKEN_FIELD] = '\0';
-    if (strcmp(token, AK_MODEL.guid) != 0) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: the FMU state is of an FMU with instantiationToken \"%s\", not this one's "
-                "\"%s\"",
-                name, token, AK_MODEL.guid);
-        return false;
-    }
-    const uint32_t interface = ak_get_u32(bytes + OFFSET_INTERFACE);
+    const uint32_t interface = content->header.interface;
     if (interface != (uint32_t)instance->interface) {
         ak3_log(instance, AK_LOG_ERROR, fmi3Error,
                 "%s: the FMU state is of a %s instance; this instance is for %s", name,
@@ -149,54 +70,8 @@ static bool header_valid(const ak3_instance *instance, const char *name, const u
                 instance->interface == AK3_MODEL_EXCHANGE ? "model exchange" : "co-simulation");
         return false;
     }
-    return true;
-}
-
-/* Checks a byte string from its length to its last value and decodes it; logs why not. */
-static bool decode(const ak3_instance *instance, ak3_function function, const unsigned char *bytes,
-                   size_t size, ak3_state_content *content) {
-    const char *name = ak3_function_name(function);
-    if (!header_valid(instance, name, bytes, size)) {
-        return false;
-    }
-    const uint32_t state = ak_get_u32(bytes + OFFSET_STATE);
-    const uint32_t stop_time_defined = ak_get_u32(bytes + OFFSET_STOP_TIME_DEFINED);
-    content->time = ak_get_f64(bytes + OFFSET_TIME);
-    content->stop_time = ak_get_f64(bytes + OFFSET_STOP_TIME);
-    if (!state_possible(state, (uint32_t)instance->interface) || stop_time_defined > 1 ||
-        ak_get_u32(bytes + OFFSET_RESERVED) != 0 || !isfinite(content->time) ||
-        !isfinite(content->stop_time)) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: the FMU state holds an impossible header (state 0x%x, time %g, stop time %g, "
-                "stop time defined %u)",
-                name, state, content->time, content->stop_time, stop_time_defined);
-        return false;
-    }
-    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
-        const ak_variable *variable = ak_variable_of((unsigned int)vr);
-        content->values[vr] = ak_get_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr);
-        if (variable == NULL) {
-            continue;
-        }
-        if (!isfinite(content->values[vr])) {
-            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                    "%s: the FMU state holds %s = %g, which is not finite", name, variable->name,
-                    content->values[vr]);
-            return false;
-        }
-        const bool integral = variable->type != AK_TYPE_INTEGER ||
-                              content->values[vr] == floor(content->values[vr]);
-        if (variable->causality == AK_CAUSALITY_PARAMETER &&
-            (!integral || AK_MODEL.check_parameter(variable, content->values[vr]) != NULL)) {
-            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                    "%s: the FMU state holds the parameter %s = %.17g, which it cannot have", name,
-                    variable->name, content->values[vr]);
-            return false;
-        }
-    }
-    content->state = (ak3_state)state;
-    content->stop_time_defined = stop_time_defined == 1;
-    return true;
+    return ak_state_image_read(&FORMAT, &instance->data, name, bytes, &content->header,
+                               state_possible, content->values, NULL);
 }
 
 static ak3_fmu_state *known_state(const ak3_instance *instance, ak3_function function,
@@ -266,10 +141,10 @@ fmi3Status fmi3SetFMUState(fmi3Instance c, fmi3FMUState FMUState) {
     if (s == NULL || !decode(instance, AK3_SET_FMU_STATE, s->bytes, state_size(), &content)) {
         return fmi3Error;
     }
-    instance->state = content.state;
-    instance->time = content.time;
-    instance->stop_time_defined = content.stop_time_defined;
-    instance->stop_time = content.stop_time;
+    instance->state = (ak3_state)content.header.state;
+    instance->time = content.header.time;
+    instance->stop_time_defined = content.header.stop_time_defined;
+    instance->stop_time = content.header.stop_time;
     for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
         instance->data.values[vr] = content.values[vr];
     }

@@ -4,15 +4,9 @@
 
 #include <stdbool.h>
 
+#include "ak_compiler.h"
 #include "fmi3_instance.h"
 
-#if defined(__MINGW32__)
-#define AK3_PRINTF_FORMAT(f, a) __attribute__((format(gnu_printf, f, a)))
-#elif defined(__GNUC__)
-#define AK3_PRINTF_FORMAT(f, a) __attribute__((format(printf, f, a)))
-#else
-#define AK3_PRINTF_FORMAT(f, a)
-#endif
 
 /* True when a message of this category reaches the importer (inline: asked on the hot path). */
 static inline bool ak3_log_on(const ak3_instance *instance, ak_log_category category) {
@@ -20,13 +14,13 @@ static inline bool ak3_log_on(const ak3_instance *instance, ak_log_category cate
 }
 
 void ak3_log(const ak3_instance *instance, ak_log_category category, fmi3Status status,
-             const char *format, ...) AK3_PRINTF_FORMAT(4, 5);
+             const char *format, ...) AK_PRINTF_FORMAT(4, 5);
 
 /* For the fmi3Instantiate* functions before an instance exists: always logs, if there is a
  * logger. */
 void ak3_log_before_instance(fmi3InstanceEnvironment environment,
                              fmi3LogMessageCallback log_message, const char *format, ...)
-    AK3_PRINTF_FORMAT(3, 4);
+    AK_PRINTF_FORMAT(3, 4);
 
 bool ak3_log_category_find(const char *name, ak_log_category *category);
 

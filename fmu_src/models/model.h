@@ -19,6 +19,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+#include "ak_compiler.h"
 #include "log_categories.h"
 
 /* Upper bounds over all models, for the arrays of an instance. */
@@ -141,11 +142,7 @@ extern const ak_model AK_MODEL;
 
 /* Formats a message and hands it to the owner's logger (models/model_log.c). */
 void ak_model_log(const ak_model_data *data, ak_log_category category, ak_status status,
-                  const char *format, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 4, 5)))
-#endif
-    ;
+                  const char *format, ...) AK_PRINTF_FORMAT(4, 5);
 
 /* The variable of a value reference, or NULL when the model has none. */
 static inline const ak_variable *ak_variable_of(unsigned int vr) {
