@@ -12,6 +12,7 @@ set(AK_CORE_HEADERS
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude.h)
 set(AK_MODEL_COMMON_SOURCES
+  fmu_src/models/model_data.c
   fmu_src/models/model_log.c
   fmu_src/models/model_outputs.c
   fmu_src/models/model_state_image.c)

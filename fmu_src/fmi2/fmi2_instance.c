@@ -26,11 +26,7 @@ static ak_real_role real_role(const ak_variable *variable) {
 }
 
 void ak_instance_reset(ak_instance *instance) {
-    for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
-        /* Errors and warnings are reported unless switched off; the call trace only on request. */
-        instance->log_enabled[category] =
-            category != AK_LOG_CALLS || instance->logging_on_at_instantiation;
-    }
+    ak_log_categories_reset(instance->log_enabled, instance->logging_on_at_instantiation);
     instance->data.log = log_for_model;
     instance->data.owner = instance;
     instance->state = AK_STATE_INSTANTIATED;
@@ -38,9 +34,7 @@ void ak_instance_reset(ak_instance *instance) {
     instance->stop_time_defined = false;
     instance->stop_time = 0.0;
     for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
-        const ak_variable *variable = ak_variable_of((unsigned int)vr);
-        instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
-        instance->real_role[vr] = (unsigned char)real_role(variable);
+        instance->real_role[vr] = (unsigned char)real_role(ak_variable_of((unsigned int)vr));
     }
     for (int role = 0; role < AK_N_REAL_ROLES; role++) {
         instance->roles_before[role][0] = 0;
@@ -49,10 +43,7 @@ void ak_instance_reset(ak_instance *instance) {
                                                                    (instance->real_role[vr] == role));
         }
     }
-    ak_instance_clear_input_derivatives(instance);
-    if (AK_MODEL.initialize != NULL) {
-        (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
-    }
+    ak_model_data_reset(&instance->data);
     ak_outputs_reset(&instance->outputs);
 }
 
@@ -63,15 +54,6 @@ bool ak_is_state(unsigned int vr) {
         }
     }
     return false;
-}
-
-void ak_instance_clear_input_derivatives(ak_instance *instance) {
-    for (int k = 0; k < AK_MAX_INPUTS; k++) {
-        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-            instance->data.input_derivatives[k][n] = 0.0;
-        }
-    }
-    instance->data.any_input_derivative = false;
 }
 
 /* The outputs up to date (models/model_outputs.c), what ran traced in logCalls. */

@@ -88,9 +88,6 @@ void ak_free_all_fmu_states(ak_instance *instance);
 /* Puts the instance in its just-instantiated condition (used by fmi2Instantiate and fmi2Reset). */
 void ak_instance_reset(ak_instance *instance);
 
-/* Forgets every input derivative (the inputs are then held constant over a step). */
-void ak_instance_clear_input_derivatives(ak_instance *instance);
-
 /* Brings the main output group up to date with the inputs, running the model only if an input
  * or parameter changed; returns the status of the evaluation the outputs come from. */
 ak_eval_status ak_instance_update_outputs(ak_instance *instance);

@@ -94,31 +94,10 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
     if (!ak_call_allowed(instance, AK_FMI2_SET_DEBUG_LOGGING)) {
         return fmi2Error;
     }
-    if (nCategories > 0 && categories == NULL) {
-        ak_log(instance, AK_LOG_ERROR, fmi2Error,
-               "fmi2SetDebugLogging: categories is NULL with nCategories = %zu", nCategories);
+    /* The logger of the model's data is the instance's (ak_instance_reset). */
+    if (!ak_log_categories_set(&instance->data, "fmi2SetDebugLogging", instance->log_enabled,
+                               nCategories, categories, loggingOn != fmi2False)) {
         return fmi2Error;
-    }
-    /* Check every name before changing anything, so that a bad call changes nothing. */
-    ak_log_category found;
-    for (size_t i = 0; i < nCategories; i++) {
-        if (categories[i] == NULL || !ak_log_category_find(categories[i], &found)) {
-            ak_log(instance, AK_LOG_ERROR, fmi2Error,
-                   "fmi2SetDebugLogging: categories[%zu] = \"%s\" is not a log category of "
-                   "this FMU (" AK_LOG_CATEGORY_LIST ")",
-                   i, categories[i] ? categories[i] : "(null)");
-            return fmi2Error;
-        }
-    }
-    const bool on = loggingOn != fmi2False;
-    if (nCategories == 0) {
-        for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
-            instance->log_enabled[category] = on;
-        }
-    }
-    for (size_t i = 0; i < nCategories; i++) {
-        ak_log_category_find(categories[i], &found);
-        instance->log_enabled[found] = on;
     }
     return fmi2OK;
 }

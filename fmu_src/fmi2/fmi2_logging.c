@@ -50,13 +50,3 @@ void ak_log_before_instance(const fmi2CallbackFunctions *functions, fmi2String i
                     arguments);
     va_end(arguments);
 }
-
-bool ak_log_category_find(const char *name, ak_log_category *category) {
-    for (int c = 0; c < AK_N_LOG_CATEGORIES; c++) {
-        if (strcmp(name, AK_LOG_CATEGORY_NAMES[c]) == 0) {
-            *category = (ak_log_category)c;
-            return true;
-        }
-    }
-    return false;
-}

@@ -7,7 +7,6 @@
 #include "ak_compiler.h"
 #include "fmi2_instance.h"
 
-
 /* True when a message of this category reaches the master. Inline, so that the calls of every
  * communication point (set, step, get) ask it before ak_log: with the trace off they pay a load
  * and a branch, not a variadic call per message. */
@@ -22,8 +21,5 @@ void ak_log(const ak_instance *instance, ak_log_category category, fmi2Status st
 /* For fmi2Instantiate, before an instance exists: always logs, if there is a logger. */
 void ak_log_before_instance(const fmi2CallbackFunctions *functions, fmi2String instance_name,
                             const char *format, ...) AK_PRINTF_FORMAT(3, 4);
-
-/* Finds a category by its <LogCategories> name; false when there is none of that name. */
-bool ak_log_category_find(const char *name, ak_log_category *category);
 
 #endif

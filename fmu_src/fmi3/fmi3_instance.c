@@ -11,30 +11,14 @@ static void log_for_model(void *owner, ak_log_category category, ak_status statu
 }
 
 void ak3_instance_reset(ak3_instance *instance) {
-    for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
-        /* Errors and warnings are reported unless switched off; the call trace only on request. */
-        instance->log_enabled[category] =
-            category != AK_LOG_CALLS || instance->logging_on_at_instantiation;
-    }
+    ak_log_categories_reset(instance->log_enabled, instance->logging_on_at_instantiation);
     instance->data.log = log_for_model;
     instance->data.owner = instance;
     instance->state = AK3_STATE_INSTANTIATED;
     instance->time = 0.0;
     instance->stop_time_defined = false;
     instance->stop_time = 0.0;
-    for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
-        const ak_variable *variable = ak_variable_of((unsigned int)vr);
-        instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
-    }
-    for (int k = 0; k < AK_MAX_INPUTS; k++) {
-        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-            instance->data.input_derivatives[k][n] = 0.0;
-        }
-    }
-    instance->data.any_input_derivative = false;
-    if (AK_MODEL.initialize != NULL) {
-        (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
-    }
+    ak_model_data_reset(&instance->data);
     ak_outputs_reset(&instance->outputs);
 }
 

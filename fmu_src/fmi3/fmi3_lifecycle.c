@@ -111,31 +111,10 @@ fmi3Status fmi3SetDebugLogging(fmi3Instance c, fmi3Boolean loggingOn, size_t nCa
     if (!ak3_call_allowed(instance, AK3_SET_DEBUG_LOGGING)) {
         return fmi3Error;
     }
-    if (nCategories > 0 && categories == NULL) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "fmi3SetDebugLogging: categories is NULL with nCategories = %zu", nCategories);
+    /* The logger of the model's data is the instance's (ak3_instance_reset). */
+    if (!ak_log_categories_set(&instance->data, "fmi3SetDebugLogging", instance->log_enabled,
+                               nCategories, categories, loggingOn != fmi3False)) {
         return fmi3Error;
-    }
-    /* Every name is checked before anything changes. */
-    ak_log_category found;
-    for (size_t i = 0; i < nCategories; i++) {
-        if (categories[i] == NULL || !ak3_log_category_find(categories[i], &found)) {
-            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                    "fmi3SetDebugLogging: categories[%zu] = \"%s\" is not a log category of "
-                    "this FMU (" AK_LOG_CATEGORY_LIST ")",
-                    i, categories[i] ? categories[i] : "(null)");
-            return fmi3Error;
-        }
-    }
-    const bool on = loggingOn != fmi3False;
-    if (nCategories == 0) {
-        for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
-            instance->log_enabled[category] = on;
-        }
-    }
-    for (size_t i = 0; i < nCategories; i++) {
-        ak3_log_category_find(categories[i], &found);
-        instance->log_enabled[found] = on;
     }
     return fmi3OK;
 }

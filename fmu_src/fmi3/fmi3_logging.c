@@ -39,13 +39,3 @@ void ak3_log_before_instance(fmi3InstanceEnvironment environment,
                     format, arguments);
     va_end(arguments);
 }
-
-bool ak3_log_category_find(const char *name, ak_log_category *category) {
-    for (int c = 0; c < AK_N_LOG_CATEGORIES; c++) {
-        if (strcmp(name, AK_LOG_CATEGORY_NAMES[c]) == 0) {
-            *category = (ak_log_category)c;
-            return true;
-        }
-    }
-    return false;
-}

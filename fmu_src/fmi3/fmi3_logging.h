@@ -7,7 +7,6 @@
 #include "ak_compiler.h"
 #include "fmi3_instance.h"
 
-
 /* True when a message of this category reaches the importer (inline: asked on the hot path). */
 static inline bool ak3_log_on(const ak3_instance *instance, ak_log_category category) {
     return instance->log_enabled[category] && instance->log_message != NULL;
@@ -21,7 +20,5 @@ void ak3_log(const ak3_instance *instance, ak_log_category category, fmi3Status 
 void ak3_log_before_instance(fmi3InstanceEnvironment environment,
                              fmi3LogMessageCallback log_message, const char *format, ...)
     AK_PRINTF_FORMAT(3, 4);
-
-bool ak3_log_category_find(const char *name, ak_log_category *category);
 
 #endif

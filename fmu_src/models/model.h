@@ -144,6 +144,25 @@ extern const ak_model AK_MODEL;
 void ak_model_log(const ak_model_data *data, ak_log_category category, ak_status status,
                   const char *format, ...) AK_PRINTF_FORMAT(4, 5);
 
+/* Every value at its start, no input derivative, the model's states from the parameters
+ * (initialize): a new or reset instance (models/model_data.c). The logger stays as set. */
+void ak_model_data_reset(ak_model_data *data);
+
+/* Forgets every input derivative (the inputs are then held constant over a step). */
+void ak_model_data_clear_input_derivatives(ak_model_data *data);
+
+/* The log categories of a new or reset instance: every one on but logCalls, which is on only
+ * when logging was asked for at instantiation (models/model_log.c). */
+void ak_log_categories_reset(bool enabled[AK_N_LOG_CATEGORIES], bool calls);
+
+/* fmi2SetDebugLogging / fmi3SetDebugLogging (models/model_log.c): switches the n named
+ * categories on or off (all of them when n is 0), after checking every name, so that a bad call
+ * changes nothing; false, with a message naming the function and the bad name, if one is NULL or
+ * no category. */
+bool ak_log_categories_set(const ak_model_data *data, const char *function,
+                           bool enabled[AK_N_LOG_CATEGORIES], size_t n,
+                           const char *const categories[], bool on);
+
 /* The variable of a value reference, or NULL when the model has none. */
 static inline const ak_variable *ak_variable_of(unsigned int vr) {
     if (vr >= (unsigned int)AK_MODEL.n_value_references || AK_MODEL.variables[vr].name == NULL) {
