@@ -91,6 +91,7 @@ AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asa
   AK_ATTITUDE_FMU="$PWD/build-asan/dist/AttitudePropagator.fmu" \
   LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)" \
   ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest -n logical $suite -q -p no:cacheprovider \
+    --basetemp=build-asan/pytest-tmp \
   | tail -1
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"

@@ -3,8 +3,8 @@
 #   set up once (scripts/setup.sh: toolchains, wine, the abuse-test tools, .venv), build once per
 #   CMake preset, then: the C tests (ctest), a short benchmark run (no timing asserted: it checks
 #   that the FMU evaluates exactly when an input changed), the bounded abuse tests (sanitizers,
-#   valgrind, static analysis, fuzzing, soak: scripts/test_abuse.sh), and the FMUs through fmpy
-#   (pytest), last so that its summary closes the output.
+#   valgrind, static analysis, fuzzing, soak: scripts/test_abuse.sh) beside the FMUs through fmpy
+#   (pytest); the abuse tests' output follows pytest's, and one line says how each ended.
 #
 #   bash scripts/test.sh              everything (CI)
 #   bash scripts/test.sh --quick      the edit loop: build, ctest, pytest without the slow tests
@@ -31,5 +31,19 @@ if [ -n "$quick" ]; then
   exit
 fi
 bash bench/run.sh --quick
-bash scripts/test_abuse.sh
-.venv/bin/python -m pytest $PARALLEL "$@"
+# The abuse tests run beside pytest: they use their own build folders and, for most of their time
+# (valgrind, cppcheck, TSan, one fuzzer of two), one core, so together the two keep both busy.
+# Their output goes to build/abuse.log, printed when pytest is done.
+echo "test.sh: the abuse tests (scripts/test_abuse.sh) run beside pytest; output in build/abuse.log"
+bash scripts/test_abuse.sh >build/abuse.log 2>&1 &
+abuse=$!
+trap 'kill "$abuse" 2>/dev/null || true' EXIT # an interrupted run stops them too
+pytest_status=0
+.venv/bin/python -m pytest $PARALLEL "$@" || pytest_status=$?
+abuse_status=0
+wait "$abuse" || abuse_status=$?
+trap - EXIT
+echo "=== the abuse tests (build/abuse.log)"
+cat build/abuse.log
+echo "test.sh: pytest exit status $pytest_status, abuse tests exit status $abuse_status"
+[ "$pytest_status" -eq 0 ] && [ "$abuse_status" -eq 0 ]
