@@ -23,6 +23,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_timing.h"
 #include "AttitudePropagator_variables.h"
 #include "attitude.h"
 #include "fmi2FunctionTypes.h"
@@ -86,35 +87,20 @@ static void log_message(fmi2ComponentEnvironment environment, fmi2String name, f
             (int)status, message);
 }
 
-static double now_ns(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
-}
-
-static int compare_doubles(const void *a, const void *b) {
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *values, int n) {
-    qsort(values, (size_t)n, sizeof *values, compare_doubles);
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 static double table[TABLE_ROWS][3];
 
 /* The bare update over n steps: ns per step; q_out receives the final q. */
 static double time_bare(long n, double q_out[4]) {
     double q[4] = {1.0, 0.0, 0.0, 0.0};
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         const double *w = table[step & (TABLE_ROWS - 1)];
         double c[4][3] = {{w[0], w[1], w[2]}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
         ak_attitude_step(AK_FRAME_BODY, c, STEP_SIZE, q, NULL);
         sink = q[step & 3];
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     memcpy(q_out, q, sizeof q);
     return elapsed / (double)n;
 }
@@ -122,7 +108,7 @@ static double time_bare(long n, double q_out[4]) {
 /* The bare update and the angles of body123 from it (what reading theta needs): ns per step. */
 static double time_bare_with_angles(long n) {
     double q[4] = {1.0, 0.0, 0.0, 0.0}, theta[3] = {0.0, 0.0, 0.0}, R[3][3], distance;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         const double *w = table[step & (TABLE_ROWS - 1)];
         double c[4][3] = {{w[0], w[1], w[2]}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
@@ -131,7 +117,7 @@ static double time_bare_with_angles(long n) {
         ak_attitude_angles(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], R, theta, theta, &distance);
         sink = theta[step % 3];
     }
-    return (now_ns() - start) / (double)n;
+    return (ak_bench_now_ns() - start) / (double)n;
 }
 
 /* n communication points on a fresh instance: ns per set/doStep/get. */
@@ -146,7 +132,7 @@ static double time_fmu(const fmu_api *api, long n, double q_out[4]) {
     double read[7];
     double t = 0.0;
     fmi2Status status = fmi2OK;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         status |= api->set_real(c, OMEGA_VRS, 3, table[step & (TABLE_ROWS - 1)]);
         status |= api->do_step(c, t, STEP_SIZE, fmi2True);
@@ -154,7 +140,7 @@ static double time_fmu(const fmu_api *api, long n, double q_out[4]) {
         t += STEP_SIZE;
         sink = read[step % 7];
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     if (status != fmi2OK) {
         fail("a call did not return fmi2OK");
     }
@@ -202,13 +188,13 @@ int main(int argc, char **argv) {
     printf("AttitudePropagator, %ld steps of %g s, median of %d repeats (thread CPU time):\n",
            steps, STEP_SIZE, repeats);
     printf("| loop | ns per step | / bare |\n|---|---:|---:|\n");
-    const double ratio_median = median(ratio, repeats);
+    const double ratio_median = ak_bench_median(ratio, repeats);
     printf("| bare quaternion update (ak_attitude_step, constant omega) | %.1f | 1.00 |\n",
-           median(bare, repeats));
+           ak_bench_median(bare, repeats));
     printf("| bare update + R + theta of body123 (ak_attitude_angles) | %.1f | %.2f |\n",
-           median(angles, repeats), median(angles_ratio, repeats));
+           ak_bench_median(angles, repeats), ak_bench_median(angles_ratio, repeats));
     printf("| FMU: set omega[1..3] + fmi2DoStep + get q[1..4], theta[1..3] | %.1f | %.2f |\n",
-           median(fmu, repeats), ratio_median);
+           ak_bench_median(fmu, repeats), ratio_median);
     dlclose(api.library);
     return 0;
 }

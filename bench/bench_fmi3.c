@@ -24,6 +24,7 @@
 
 #include "AngularKinematics_variables.h" /* AK_GUID, generated */
 #include "bench_inputs.h"
+#include "bench_timing.h"
 #include "fmi2FunctionTypes.h"
 #include "fmi3FunctionTypes.h"
 #include "kinematics_general.h"
@@ -33,21 +34,6 @@ enum { TABLE_ROWS = AK_BENCH_ROWS, MAX_REPEATS = 51 };
 static double input_table[TABLE_ROWS][AK_BENCH_INPUTS];
 static volatile double sink;
 
-static double now_ns(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
-}
-
-static int compare_doubles(const void *a, const void *b) {
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *values, int n) {
-    qsort(values, (size_t)n, sizeof *values, compare_doubles);
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 static void *symbol(void *library, const char *name) {
     void *s = dlsym(library, name);
@@ -63,14 +49,14 @@ static void *symbol(void *library, const char *name) {
 static double time_core(long n) {
     double y[12], sum = 0.0;
     int k = 0;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) { /* the same loop as bench_fmu.c's time_core */
         const double *u = input_table[step & (TABLE_ROWS - 1)];
         ak_general_angular_kinematics(&AK_SEQUENCES[0], u, u + 3, u + 6, y, y + 3, y + 6, y + 9);
         sum += y[k];
         k = k == 11 ? 0 : k + 1;
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     sink = sum;
     return elapsed / (double)n;
 }
@@ -95,7 +81,7 @@ static double time_fmi2(void *library, long n) {
     const fmi2ValueReference out[12] = {9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20};
     double y[12], sum = 0.0, t = 0.0;
     unsigned int statuses = 0;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         statuses |= (unsigned int)set(c, in, 9, input_table[step & (TABLE_ROWS - 1)]);
         statuses |= (unsigned int)step_fn(c, t, 1e-3, fmi2True);
@@ -103,7 +89,7 @@ static double time_fmi2(void *library, long n) {
         statuses |= (unsigned int)get(c, out, 12, y);
         sum += y[step % 12];
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     sink = sum;
     FUNCTION(fmi2FreeInstanceTYPE, library, "fmi2FreeInstance")(c);
     if (statuses != 0) {
@@ -132,7 +118,7 @@ static double time_fmi3(void *library, long n) {
     double y[12], sum = 0.0, t = 0.0, last;
     fmi3Boolean event, terminate, early;
     unsigned int statuses = 0;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         const double *u = input_table[step & (TABLE_ROWS - 1)];
         statuses |= (unsigned int)set(c, &theta, 1, u, 3);
@@ -143,7 +129,7 @@ static double time_fmi3(void *library, long n) {
         statuses |= (unsigned int)get(c, out, 4, y, 12);
         sum += y[step % 12];
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     sink = sum;
     FUNCTION(fmi3FreeInstanceTYPE, library, "fmi3FreeInstance")(c);
     if (statuses != 0) {
@@ -199,7 +185,7 @@ int main(int argc, char **argv) {
            steps, repeats);
     printf("| core ns/step | FMI 2 cycle ns/step | FMI 3 cycle ns/step | FMI 2 / core | FMI 3 / core |\n");
     printf("|---|---|---|---|---|\n");
-    printf("| %.1f | %.1f | %.1f | %.3f | %.3f |\n", median(core, repeats), median(c2, repeats),
-           median(c3, repeats), median(r2, repeats), median(r3, repeats));
+    printf("| %.1f | %.1f | %.1f | %.3f | %.3f |\n", ak_bench_median(core, repeats), ak_bench_median(c2, repeats),
+           ak_bench_median(c3, repeats), ak_bench_median(r2, repeats), ak_bench_median(r3, repeats));
     return 0;
 }

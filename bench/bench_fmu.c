@@ -37,6 +37,7 @@
 #include "fmi2FunctionTypes.h"
 #include "AngularKinematics_variables.h"
 #include "bench_inputs.h"
+#include "bench_timing.h"
 #include "kinematics_general.h"
 
 
@@ -216,30 +217,13 @@ static void fill_input_table(void) {
 
 static volatile double sink;
 
-/* CPU time of this thread: on a machine shared with other jobs, the time the thread was not
- * running does not count against the FMU (wall time would charge it). */
-static double now_ns(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
-}
-
-static int compare_doubles(const void *a, const void *b) {
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *values, int n) {
-    qsort(values, (size_t)n, sizeof *values, compare_doubles);
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 /* The bare core on the inputs of steps 0..n-1: ns per evaluation. */
 static double time_core(long n) {
     double outputs[N_OUTPUTS];
     double sum = 0.0;
     int k = 0;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         const double *u = input_table[step & (TABLE_ROWS - 1)];
         ak_general_angular_kinematics(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], u, u + 3, u + 6, outputs,
@@ -247,7 +231,7 @@ static double time_core(long n) {
         sum += outputs[k];
         k = k == N_OUTPUTS - 1 ? 0 : k + 1;
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     sink = sum;
     return elapsed / (double)n;
 }
@@ -262,7 +246,7 @@ static double time_cycle(fmu_api *api, const fmi2ValueReference *vrs, int n_vrs,
     double sum = 0.0, t = fmu.time;
     int k = 0;
     unsigned int statuses = fmi2OK;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         const double *u = input_table[step & (TABLE_ROWS - 1)];
         statuses |= (unsigned int)api->set_real(fmu.component, INPUT_VRS, N_INPUTS, u);
@@ -272,7 +256,7 @@ static double time_cycle(fmu_api *api, const fmi2ValueReference *vrs, int n_vrs,
         sum += outputs[k];
         k = k >= n_vrs - 1 ? 0 : k + 1;
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     sink = sum;
     check_ok((fmi2Status)statuses, "a call of the timed cycle");
     if (evaluations_between(evaluations_before, evaluations(&fmu)) != (unsigned long)n) {
@@ -292,13 +276,13 @@ static double time_get_unchanged(fmu_api *api, const fmi2ValueReference *vrs, lo
     double sum = 0.0;
     int k = 0;
     unsigned int statuses = fmi2OK;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long call = 0; call < n; call++) {
         statuses |= (unsigned int)api->get_real(fmu.component, vrs, N_OUTPUTS, outputs);
         sum += outputs[k];
         k = k == N_OUTPUTS - 1 ? 0 : k + 1;
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     sink = sum;
     check_ok((fmi2Status)statuses, "a get of the timed loop");
     if (evaluations_between(evaluations_before, evaluations(&fmu)) != 0) {
@@ -313,12 +297,12 @@ static double time_set_only(fmu_api *api, long n) {
     instance fmu;
     start_instance(api, &fmu);
     unsigned int statuses = fmi2OK;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long call = 0; call < n; call++) {
         statuses |= (unsigned int)api->set_real(fmu.component, INPUT_VRS, N_INPUTS,
                                   input_table[call & (TABLE_ROWS - 1)]);
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     check_ok((fmi2Status)statuses, "a set of the timed loop");
     stop_instance(&fmu);
     return elapsed / (double)n;
@@ -330,12 +314,12 @@ static double time_step_only(fmu_api *api, long n) {
     start_instance(api, &fmu);
     unsigned int statuses = fmi2OK;
     double t = fmu.time;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long call = 0; call < n; call++) {
         statuses |= (unsigned int)api->do_step(fmu.component, t, STEP_SIZE, fmi2True);
         t += STEP_SIZE;
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     check_ok((fmi2Status)statuses, "a step of the timed loop");
     stop_instance(&fmu);
     return elapsed / (double)n;
@@ -351,7 +335,7 @@ static double time_single_change(fmu_api *api, int input, long n) {
     double sum = 0.0;
     int k = 0;
     unsigned int statuses = fmi2OK;
-    const double start = now_ns();
+    const double start = ak_bench_now_ns();
     for (long call = 0; call < n; call++) {
         const double *u = input_table[(call + 1) & (TABLE_ROWS - 1)];
         statuses |= (unsigned int)api->set_real(fmu.component, &INPUT_VRS[input], 1, &u[input]);
@@ -359,7 +343,7 @@ static double time_single_change(fmu_api *api, int input, long n) {
         sum += outputs[k];
         k = k == N_OUTPUTS - 1 ? 0 : k + 1;
     }
-    const double elapsed = now_ns() - start;
+    const double elapsed = ak_bench_now_ns() - start;
     sink = sum;
     check_ok((fmi2Status)statuses, "a call of the timed loop");
     if (evaluations_between(evaluations_before, evaluations(&fmu)) != (unsigned long)n) {
@@ -514,15 +498,15 @@ static void run_scaling(fmu_api *api, const options *o) {
             lazy_ratios[r] = lazy[r] / core[r];
         }
         printf("| %ld | %d | %.1f | %.1f | %.2f | %.1f | %.2f | %.1f | %.2f | %ld | %lu |\n", n,
-               repeats, median(core, repeats), median(cycle, repeats), median(ratios, repeats),
-               median(all, repeats), median(all_ratios, repeats), median(lazy, repeats),
-               median(lazy_ratios, repeats), max_rss_kib(), allocations_per_run);
+               repeats, ak_bench_median(core, repeats), ak_bench_median(cycle, repeats), ak_bench_median(ratios, repeats),
+               ak_bench_median(all, repeats), ak_bench_median(all_ratios, repeats), ak_bench_median(lazy, repeats),
+               ak_bench_median(lazy_ratios, repeats), max_rss_kib(), allocations_per_run);
         fflush(stdout);
     }
 }
 
 static void print_row(const char *name, double *ns, double *ratios, int repeats) {
-    printf("| %s | %.1f | %.2f |\n", name, median(ns, repeats), median(ratios, repeats));
+    printf("| %s | %.1f | %.2f |\n", name, ak_bench_median(ns, repeats), ak_bench_median(ratios, repeats));
 }
 
 static void run_calls(fmu_api *api, const options *o) {
@@ -551,7 +535,7 @@ static void run_calls(fmu_api *api, const options *o) {
            "evaluation count is checked unchanged:\n\n",
            o->calls, repeats);
     printf("| call | ns/call | / core |\n|---|---:|---:|\n");
-    printf("| bare core (for scale) | %.1f | 1.00 |\n", median(core, repeats));
+    printf("| bare core (for scale) | %.1f | 1.00 |\n", ak_bench_median(core, repeats));
     print_row("fmi2GetReal of 12 outputs, no input changed", single[GET], single_ratio[GET],
               repeats);
     print_row("same, outputs asked in reverse order", single[GET_REVERSED],
