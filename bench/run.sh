@@ -55,6 +55,7 @@ if [ -z "${AK_SET_UP:-}" ]; then
 fi
 
 fmu_so=build/fmu/binaries/linux64/AngularKinematics.so
+fmu3_so=build/fmu3/binaries/x86_64-linux/AngularKinematics.so
 driver=build/bench/bench_fmu
 
 # The calls in one function of a binary, counted: "sincos@plt x3, ...".
@@ -88,33 +89,24 @@ machine() {
 }
 
 # Instructions per step of one loop: the difference between two run lengths, so that loading,
-# instantiation and the checks before timing cancel out.
+# instantiation and the checks before timing cancel out. Arguments: the driver's command, with
+# STEPS where the step count goes.
 instructions_per_step() {
-  local loop=$1 small=10000 large=110000 a b
-  a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$driver" "$fmu_so" --only "$loop" \
-      --steps $small 2>&1 | sed -n 's/.*Collected : //p')
-  b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$driver" "$fmu_so" --only "$loop" \
-      --steps $large 2>&1 | sed -n 's/.*Collected : //p')
-  echo $(( (b - a) / (large - small) ))
-}
-
-# The same for one loop of bench_fmi3 (core, fmi2 or fmi3).
-fmi3_instructions_per_step() {
-  local loop=$1 small=10000 large=110000 a b
-  a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null build/bench/bench_fmi3 "$fmu_so" \
-      build/fmu3/binaries/x86_64-linux/AngularKinematics.so $small 1 "$loop" 2>&1 | sed -n 's/.*Collected : //p')
-  b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null build/bench/bench_fmi3 "$fmu_so" \
-      build/fmu3/binaries/x86_64-linux/AngularKinematics.so $large 1 "$loop" 2>&1 | sed -n 's/.*Collected : //p')
+  local small=10000 large=110000 a b
+  a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$small}" 2>&1 |
+      sed -n 's/.*Collected : //p')
+  b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$large}" 2>&1 |
+      sed -n 's/.*Collected : //p')
   echo $(( (b - a) / (large - small) ))
 }
 
 callgrind_table() {
   local core cycle all lazy get
-  core=$(instructions_per_step core)
-  cycle=$(instructions_per_step cycle)
-  all=$(instructions_per_step all)
-  lazy=$(instructions_per_step lazy)
-  get=$(instructions_per_step get)
+  core=$(instructions_per_step "$driver" "$fmu_so" --only core --steps STEPS)
+  cycle=$(instructions_per_step "$driver" "$fmu_so" --only cycle --steps STEPS)
+  all=$(instructions_per_step "$driver" "$fmu_so" --only all --steps STEPS)
+  lazy=$(instructions_per_step "$driver" "$fmu_so" --only lazy --steps STEPS)
+  get=$(instructions_per_step "$driver" "$fmu_so" --only get --steps STEPS)
   echo "Instructions per step under valgrind --tool=callgrind (exact, independent of machine load):"
   echo
   echo "| loop | instructions per step | / core |"
@@ -127,9 +119,9 @@ callgrind_table() {
   # bench_fmi3's loops: its bare core is inlined into the loop (fewer instructions than
   # bench_fmu's, which calls it), so its ratios are the stricter ones.
   local inlined fmi2_cycle fmi3_cycle
-  inlined=$(fmi3_instructions_per_step core)
-  fmi2_cycle=$(fmi3_instructions_per_step fmi2)
-  fmi3_cycle=$(fmi3_instructions_per_step fmi3)
+  inlined=$(instructions_per_step build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" STEPS 1 core)
+  fmi2_cycle=$(instructions_per_step build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" STEPS 1 fmi2)
+  fmi3_cycle=$(instructions_per_step build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" STEPS 1 fmi3)
   echo
   echo "bench_fmi3's loops (its bare core inlined into the loop):"
   echo
@@ -148,8 +140,7 @@ callgrind_table() {
   "$driver" "$fmu_so" --steps "$steps" --repeats "$repeats" --calls "$calls"
   echo
   # The FMI 3 cycle beside the FMI 2 cycle and the core, alternately (bench/bench_fmi3.c).
-  build/bench/bench_fmi3 "$fmu_so" build/fmu3/binaries/x86_64-linux/AngularKinematics.so \
-    "$fmi3_steps" "$repeats"
+  build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" "$fmi3_steps" "$repeats"
   echo
   if [ "$callgrind" = yes ] && command -v valgrind >/dev/null 2>&1; then
     callgrind_table
