@@ -3,20 +3,24 @@
 # tests, static analysis, 10 s of fuzzing per fuzzer after replaying its corpus (AK_FUZZ_SECONDS),
 # a soak of 1e6 steps per model. docs/abuse_testing.md gives the long versions.
 #   bash scripts/test_abuse.sh
-# The fuzzing (its own build folder, build-fuzz/) runs beside the other checks, its output in
-# build/fuzz.log, printed after theirs.
+# The fuzzing (build-fuzz/) and the static analysis (no build) run beside the sanitizer and soak
+# runs, their output in build/fuzz.log and build/static.log, printed after the others'.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mkdir -p build
 bash scripts/fuzz.sh "${AK_FUZZ_SECONDS:-10}" >build/fuzz.log 2>&1 &
 fuzz=$!
-trap 'kill "$fuzz" 2>/dev/null || true' EXIT
+bash scripts/check_static.sh >build/static.log 2>&1 &
+static=$!
+trap 'kill "$fuzz" "$static" 2>/dev/null || true' EXIT
 bash scripts/check_sanitizers.sh --quick
-bash scripts/check_static.sh
 bash scripts/soak.sh 1000000
-fuzz_status=0
-wait "$fuzz" || fuzz_status=$?
+status=0
+for job in static fuzz; do
+  pid=${!job}
+  wait "$pid" || { echo "test_abuse: $job FAILED (build/$job.log)"; status=1; }
+  echo "=== $job (build/$job.log)"
+  cat "build/$job.log"
+done
 trap - EXIT
-echo "=== fuzzing (build/fuzz.log)"
-cat build/fuzz.log
-exit "$fuzz_status"
+exit "$status"
