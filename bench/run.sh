@@ -100,36 +100,37 @@ instructions_per_step() {
   echo $(( (b - a) / (large - small) ))
 }
 
+# One table of instruction counts: a title, then "label|instructions" rows, the first the core
+# the others are divided by.
+instruction_table() {
+  local title=$1 core=${2#*|}
+  shift
+  echo "$title"
+  echo
+  echo "| loop | instructions per step | / core |"
+  echo "|---|---:|---:|"
+  for row in "$@"; do
+    awk -v l="${row%|*}" -v c="${row#*|}" -v k="$core" \
+      'BEGIN { printf "| %s | %d | %.2f |\n", l, c, c / k }'
+  done
+}
+
 callgrind_table() {
-  local core cycle all lazy get
-  core=$(instructions_per_step "$driver" "$fmu_so" --only core --steps STEPS)
-  cycle=$(instructions_per_step "$driver" "$fmu_so" --only cycle --steps STEPS)
-  all=$(instructions_per_step "$driver" "$fmu_so" --only all --steps STEPS)
-  lazy=$(instructions_per_step "$driver" "$fmu_so" --only lazy --steps STEPS)
-  get=$(instructions_per_step "$driver" "$fmu_so" --only get --steps STEPS)
-  echo "Instructions per step under valgrind --tool=callgrind (exact, independent of machine load):"
+  local fmu=("$driver" "$fmu_so") fmi3=(build/bench/bench_fmi3 "$fmu_so" "$fmu3_so")
+  instruction_table \
+    "Instructions per step under valgrind --tool=callgrind (exact, independent of machine load):" \
+    "bare core|$(instructions_per_step "${fmu[@]}" --only core --steps STEPS)" \
+    "set 9 + doStep + get 12|$(instructions_per_step "${fmu[@]}" --only cycle --steps STEPS)" \
+    "set 9 + doStep + get all 61|$(instructions_per_step "${fmu[@]}" --only all --steps STEPS)" \
+    "set 9 + doStep + get R[1,1]|$(instructions_per_step "${fmu[@]}" --only lazy --steps STEPS)" \
+    "get 12, no input changed|$(instructions_per_step "${fmu[@]}" --only get --steps STEPS)"
   echo
-  echo "| loop | instructions per step | / core |"
-  echo "|---|---:|---:|"
-  echo "| bare core | $core | 1.00 |"
-  awk -v c="$cycle" -v k="$core" 'BEGIN { printf "| set 9 + doStep + get 12 | %d | %.2f |\n", c, c / k }'
-  awk -v c="$all" -v k="$core" 'BEGIN { printf "| set 9 + doStep + get all 61 | %d | %.2f |\n", c, c / k }'
-  awk -v c="$lazy" -v k="$core" 'BEGIN { printf "| set 9 + doStep + get R[1,1] | %d | %.2f |\n", c, c / k }'
-  awk -v g="$get" -v k="$core" 'BEGIN { printf "| get 12, no input changed | %d | %.2f |\n", g, g / k }'
-  # bench_fmi3's loops: its bare core is inlined into the loop (fewer instructions than
-  # bench_fmu's, which calls it), so its ratios are the stricter ones.
-  local inlined fmi2_cycle fmi3_cycle
-  inlined=$(instructions_per_step build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" STEPS 1 core)
-  fmi2_cycle=$(instructions_per_step build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" STEPS 1 fmi2)
-  fmi3_cycle=$(instructions_per_step build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" STEPS 1 fmi3)
-  echo
-  echo "bench_fmi3's loops (its bare core inlined into the loop):"
-  echo
-  echo "| loop | instructions per step | / core |"
-  echo "|---|---:|---:|"
-  echo "| bare core, inlined | $inlined | 1.00 |"
-  awk -v c="$fmi2_cycle" -v k="$inlined" 'BEGIN { printf "| FMI 2: set 9 + doStep + get 12 | %d | %.2f |\n", c, c / k }'
-  awk -v c="$fmi3_cycle" -v k="$inlined" 'BEGIN { printf "| FMI 3: 3 sets of 3 + doStep + get of 4 arrays | %d | %.2f |\n", c, c / k }'
+  # bench_fmi3's bare core is inlined into its loop (fewer instructions than bench_fmu's, which
+  # calls it), so its ratios are the stricter ones.
+  instruction_table "bench_fmi3's loops (its bare core inlined into the loop):" \
+    "bare core, inlined|$(instructions_per_step "${fmi3[@]}" STEPS 1 core)" \
+    "FMI 2: set 9 + doStep + get 12|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi2)" \
+    "FMI 3: 3 sets of 3 + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi3)"
 }
 
 {
