@@ -202,10 +202,12 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         !arrays_given(instance, AK_FMI2_SET_REAL, nvr, vr, value)) {
         return fmi2Error;
     }
-    /* The usual set of a master: the first nvr inputs in value-reference order, untraced. */
-    if (nvr > 0 && nvr <= (size_t)AK_MODEL.n_inputs && !instance->data.any_input_derivative &&
-        memcmp(vr, EVERY_VALUE_REFERENCE, nvr * sizeof vr[0]) == 0 &&
-        !ak_log_on(instance, AK_LOG_CALLS)) {
+    /* Untraced, and no input derivative to forget: a usual set stores values, nothing more. */
+    const bool trace = ak_log_on(instance, AK_LOG_CALLS);
+    const bool plain_store = !trace && !instance->data.any_input_derivative;
+    /* The usual set of a master: the first nvr inputs in value-reference order. */
+    if (plain_store && nvr > 0 && nvr <= (size_t)AK_MODEL.n_inputs &&
+        memcmp(vr, EVERY_VALUE_REFERENCE, nvr * sizeof vr[0]) == 0) {
         /* Every input at once is the usual set: with the count a link-time constant, the
          * compiler unrolls the check and the copy instead of calling memcpy. */
         const ak_store_result stored =
@@ -223,8 +225,7 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
     if (!usual && !check_each_real(instance, vr, nvr, value)) {
         return fmi2Error;
     }
-    const bool trace = ak_log_on(instance, AK_LOG_CALLS);
-    if (usual && !trace && !instance->data.any_input_derivative) {
+    if (usual && plain_store) {
         /* Store every value; the outputs go stale only if one differs (masters often set
          * unchanged inputs). */
         bool changed = false;

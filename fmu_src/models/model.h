@@ -148,9 +148,6 @@ void ak_model_log(const ak_model_data *data, ak_log_category category, ak_status
  * (initialize): a new or reset instance (models/model_data.c). The logger stays as set. */
 void ak_model_data_reset(ak_model_data *data);
 
-/* Forgets every input derivative (the inputs are then held constant over a step). */
-void ak_model_data_clear_input_derivatives(ak_model_data *data);
-
 /* The log categories of a new or reset instance: every one on but logCalls, which is on only
  * when logging was asked for at instantiation (models/model_log.c). */
 void ak_log_categories_reset(bool enabled[AK_N_LOG_CATEGORIES], bool calls);

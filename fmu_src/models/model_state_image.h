@@ -48,8 +48,9 @@ typedef struct {
 } ak_state_header;
 
 enum {
-    AK_STATE_IMAGE_MAX_SIZE =
-        88 + 8 * AK_MAX_VARIABLES + 8 * AK_MAX_INPUTS * AK_MAX_INPUT_DERIVATIVE_ORDER + 4
+    AK_STATE_IMAGE_HEADER_SIZE = 88, /* where the values begin */
+    AK_STATE_IMAGE_MAX_SIZE = AK_STATE_IMAGE_HEADER_SIZE + 8 * AK_MAX_VARIABLES +
+                              8 * AK_MAX_INPUTS * AK_MAX_INPUT_DERIVATIVE_ORDER + 4
 };
 
 size_t ak_state_image_size(const ak_state_format *format);
