@@ -6,7 +6,7 @@
  *   - the bare core, ak_general_angular_kinematics for body123 (the FMU's default sequence),
  *     linked from the same static library (same compiler, same flags) that the FMU is built from;
  *   - the full cycle of one communication point: fmi2SetReal of the 9 inputs, fmi2DoStep,
- *     fmi2GetReal of the 12 outputs; the same cycle getting all 61 outputs (what fmpy's
+ *     fmi2GetReal of the 12 outputs; the same cycle getting all outputs (what fmpy's
  *     simulate_fmu records by default), and getting R[1,1] alone (one output of the lazy group);
  *   - fmi2GetReal of the 12 outputs when no input changed (the FMU must not recompute), in
  *     value-reference order and reversed; fmi2SetReal of the 9 inputs alone; fmi2DoStep alone;
@@ -465,12 +465,13 @@ static const char *const INPUT_NAMES[N_INPUTS] = {
 
 static void run_scaling(fmu_api *api, const options *o) {
     printf("Full cycles: fmi2SetReal of 9 inputs, fmi2DoStep, then fmi2GetReal of the 12 omega/alpha\n"
-           "outputs (cycle), of all 61 outputs (all 61), or of R[1,1] alone (one lazy output).\n"
+           "outputs (cycle), of all %d outputs (all), or of R[1,1] alone (one lazy output).\n"
            "Each is compared with the same bare core, ak_general_angular_kinematics for body123 (the\n"
            "12 omega/alpha outputs); the four loops run alternately in each repeat; ns are medians of\n"
-           "the repeats, each ratio the median of the per-repeat ratios:\n\n");
+           "the repeats, each ratio the median of the per-repeat ratios:\n\n",
+           (int)AK_N_OUTPUTS);
     printf("| steps per run | repeats | core ns/step | cycle ns/step | cycle / core | "
-           "all 61 ns | all 61 / core | one lazy ns | one lazy / core | "
+           "all ns | all / core | one lazy ns | one lazy / core | "
            "max RSS KiB | FMU allocations per run |\n");
     printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int s = 0; s < o->n_sizes; s++) {
@@ -559,8 +560,11 @@ int main(int argc, char **argv) {
         return 1;
     }
     fill_input_table();
-    for (int k = 0; k < AK_N_OUTPUTS; k++) {
-        ALL_OUTPUT_VRS[k] = (fmi2ValueReference)(AK_VR_OMEGA_FIXED + k);
+    int n_outputs = 0;
+    for (int vr = 0; vr < AK_N_VALUE_REFERENCES; vr++) {
+        if (AK_VARIABLES[vr].name != NULL && AK_VARIABLES[vr].causality == AK_CAUSALITY_OUTPUT) {
+            ALL_OUTPUT_VRS[n_outputs++] = (fmi2ValueReference)vr;
+        }
     }
     check_fmu(&api);
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The benchmark (docs/performance.md). Builds the FMU, the driver and the pass-through FMU in
 # Release in build/, then prints, for this machine:
-#   1. the C driver's figures (bench/bench_fmu.c): set/doStep/get cycle (12 outputs, all 61
+#   1. the C driver's figures (bench/bench_fmu.c): set/doStep/get cycle (12 outputs, all
 #      outputs, one lazy output) vs. the bare core, gets
 #      without input change, gets after one input change, scaling with the step count;
 #   2. instruction counts per step under callgrind, when valgrind is installed (stable where
@@ -121,7 +121,7 @@ callgrind_table() {
     "Instructions per step under valgrind --tool=callgrind (exact, independent of machine load):" \
     "bare core|$(instructions_per_step "${fmu[@]}" --only core --steps STEPS)" \
     "set 9 + doStep + get 12|$(instructions_per_step "${fmu[@]}" --only cycle --steps STEPS)" \
-    "set 9 + doStep + get all 61|$(instructions_per_step "${fmu[@]}" --only all --steps STEPS)" \
+    "set 9 + doStep + get all outputs|$(instructions_per_step "${fmu[@]}" --only all --steps STEPS)" \
     "set 9 + doStep + get R[1,1]|$(instructions_per_step "${fmu[@]}" --only lazy --steps STEPS)" \
     "get 12, no input changed|$(instructions_per_step "${fmu[@]}" --only get --steps STEPS)"
   echo

@@ -15,7 +15,8 @@ set(AK_MODEL_COMMON_SOURCES
   fmu_src/models/model_data.c
   fmu_src/models/model_log.c
   fmu_src/models/model_outputs.c
-  fmu_src/models/model_state_image.c)
+  fmu_src/models/model_state_image.c
+  fmu_src/models/model_derived.c)
 set(AK_FMI2_SOURCES
   fmu_src/fmi2/fmi2_instance.c
   fmu_src/fmi2/fmi2_logging.c
@@ -66,7 +67,8 @@ set(AK_FMI3_ARRAYS_AngularKinematics
   fmu_src/models/AngularKinematics/fmi3/AngularKinematics_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_AngularKinematics
   fmu_src/models/AngularKinematics/model.c
-  fmu_src/models/AngularKinematics/AngularKinematics_variables.c)
+  fmu_src/models/AngularKinematics/AngularKinematics_variables.c
+  fmu_src/models/AngularKinematics/AngularKinematics_derived.c)
 set(AK_MODEL_HEADERS_AngularKinematics
   fmu_src/models/AngularKinematics/AngularKinematics_variables.h)
 set(AK_MODEL_DESCRIPTION_AngularKinematics "modelDescription.xml")
@@ -74,7 +76,8 @@ set(AK_FMI3_ARRAYS_EulerRates
   fmu_src/models/EulerRates/fmi3/EulerRates_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_EulerRates
   fmu_src/models/EulerRates/model.c
-  fmu_src/models/EulerRates/EulerRates_variables.c)
+  fmu_src/models/EulerRates/EulerRates_variables.c
+  fmu_src/models/EulerRates/EulerRates_derived.c)
 set(AK_MODEL_HEADERS_EulerRates
   fmu_src/models/EulerRates/EulerRates_variables.h)
 set(AK_MODEL_DESCRIPTION_EulerRates "fmu_src/models/EulerRates/modelDescription.xml")
@@ -82,7 +85,8 @@ set(AK_FMI3_ARRAYS_AttitudePropagator
   fmu_src/models/AttitudePropagator/fmi3/AttitudePropagator_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_AttitudePropagator
   fmu_src/models/AttitudePropagator/model.c
-  fmu_src/models/AttitudePropagator/AttitudePropagator_variables.c)
+  fmu_src/models/AttitudePropagator/AttitudePropagator_variables.c
+  fmu_src/models/AttitudePropagator/AttitudePropagator_derived.c)
 set(AK_MODEL_HEADERS_AttitudePropagator
   fmu_src/models/AttitudePropagator/AttitudePropagator_variables.h)
 set(AK_MODEL_DESCRIPTION_AttitudePropagator "fmu_src/models/AttitudePropagator/modelDescription.xml")

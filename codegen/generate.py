@@ -4,6 +4,8 @@
     fmu_src/core/sequences.c                       the 24 sequences as C data
     fmu_src/models/log_categories.h                the log categories (C enum and names)
     fmu_src/models/<Model>/<Model>_variables.{h,c} value references, counts, GUID, variable table
+    fmu_src/models/<Model>/<Model>_derived.c       the calls of the core functions that compute
+                                                   outputs from outputs (`computed_by`)
     fmu_src/models/<Model>/buildDescription.xml    how to build the source FMU
     <the model's modelDescription.xml>             FMI 2.0 (the top-level one is AngularKinematics')
     cmake/generated.cmake                          version, models and source lists for CMake
@@ -96,7 +98,71 @@ def variables_h(model):
     lines += [
               f"    {p}_N_VALUE_REFERENCES = {n_slots} /* highest value reference + 1 */",
               "};", "",
-              f"extern const ak_variable {p}_VARIABLES[{p}_N_VALUE_REFERENCES];", "", "#endif", ""]
+              f"extern const ak_variable {p}_VARIABLES[{p}_N_VALUE_REFERENCES];",
+              f"extern const ak_derived_outputs {p}_DERIVED_OUTPUTS; /* {model.name}_derived.c */",
+              "", "#endif", ""]
+    return "\n".join(lines)
+
+
+def core_header_declaring(function):
+    """The core header (fmu_src/core/*.h) that declares a function; exactly one must."""
+    found = [h.name for h in sorted((ROOT / "fmu_src" / "core").glob("*.h"))
+             if re.search(rf"\b{re.escape(function)}\s*\(", h.read_text())]
+    assert len(found) == 1, f"{function}: declared in {found or 'no header'} of fmu_src/core/"
+    return found[0]
+
+
+def gives_derivatives(model):
+    return bool(model.capabilities.get("provides_directional_derivative") or
+                model.capabilities.get("max_output_derivative_order"))
+
+
+def derived_c(model):
+    """The outputs computed from other outputs by a core function (`computed_by`): the calls,
+    and the calls of each function's `_tangent` twin for the model's derivatives."""
+    p = constant_prefix(model)
+    entries = [e for e in model.arrays if "computed_by" in e]
+    lines = [f"/* The outputs of {model.name} that core functions compute from its other outputs "
+             "(`computed_by` in",
+             " * description.py), and their tangents for the derivatives (models/model_derived.c).",
+             f" * {HEADER_NOTE.format(source=f'models/{model.name}/description.py')} */",
+             f'#include "{model.name}_variables.h"', ""]
+    if not entries:
+        lines += [f"const ak_derived_outputs {p}_DERIVED_OUTPUTS = {{0, NULL, 0, NULL, NULL, NULL}};",
+                  ""]
+        return "\n".join(lines)
+    tangents = gives_derivatives(model)
+    functions = [e["computed_by"][0] for e in entries]
+    headers = sorted({core_header_declaring(f) for f in functions} |
+                     ({core_header_declaring(f + "_tangent") for f in functions} if tangents
+                      else set()))
+    lines[-1:-1] = [f'#include "{h}"' for h in headers]
+
+    def at(array, name):
+        return f"&{array}[{p}_VR_{c_identifier(name)}]"
+
+    def call(e, suffix, tangent):
+        function, *arguments = e["computed_by"]
+        args = [at("v", a) for a in arguments]
+        args += [at("dv", a) for a in arguments] if tangent else []
+        args.append(at("dv" if tangent else "v", e["name"]))
+        return f"        {function}{suffix}({', '.join(args)});"
+
+    lines += ["static void compute(double v[]) {"]
+    lines += [call(e, "", False)[4:] for e in entries]
+    lines += ["}", ""]
+    if tangents:
+        lines += ["static void tangents(const double v[], double dv[]) {"]
+        lines += [call(e, "_tangent", True)[4:] for e in entries]
+        lines += ["}", ""]
+    derived = [s for s in model.scalars if s.computed_by]
+    arguments = sorted({t.vr for s in derived for t in model.scalars
+                        if t.base in s.computed_by[1:] and not t.computed_by})
+    lines += [f"static const unsigned int OUTPUTS[] = {{{', '.join(str(s.vr) for s in derived)}}};",
+              f"static const unsigned int ARGUMENTS[] = {{{', '.join(str(vr) for vr in arguments)}}};",
+              "",
+              f"const ak_derived_outputs {p}_DERIVED_OUTPUTS = {{{len(derived)}, OUTPUTS, "
+              f"{len(arguments)}, ARGUMENTS, compute, {'tangents' if tangents else 'NULL'}}};", ""]
     return "\n".join(lines)
 
 
@@ -110,7 +176,7 @@ def variables_c(model):
         inputs = model.input_dependencies(s)
         deps = "{" + ", ".join(str(d) for d in inputs) + "}" if inputs else "{0}"
         unit = {**project.TYPES, **project.OPTIONAL_TYPES}.get(s.type, (None, "", None))[1]
-        group = "AK_GROUP_LAZY" if s.group == "lazy" else "AK_GROUP_MAIN"
+        group = f"AK_GROUP_{s.group.upper()}"
         lines.append(
             f"    [{s.vr}] = {{{s.vr}, {c_string(s.name)}, AK_CAUSALITY_{s.causality.upper()}, "
             f"AK_TYPE_{s.fmi_type.upper()}, {group}, {c_string(s.type)}, {c_string(unit)}, "
@@ -321,6 +387,7 @@ def outputs():
     for m in models:
         files[m.folder / f"{m.name}_variables.h"] = variables_h(m)
         files[m.folder / f"{m.name}_variables.c"] = variables_c(m)
+        files[m.folder / f"{m.name}_derived.c"] = derived_c(m)
         files[m.folder / "buildDescription.xml"] = build_description(m)
         files[m.model_description] = model_description(m)
         if m.name not in project.FMI3_MODELS:

@@ -22,7 +22,7 @@ class Scalar:
     causality: str         # input, output, parameter, local
     type: str              # declared type: Angle, ..., Sequence, Frame
     fmi_type: str          # Real or Integer (Enumerations are Integers in the C table)
-    group: str             # outputs: main or lazy
+    group: str             # outputs: main, lazy, or derived (computed_by)
     start: float
     min: float
     max: float
@@ -31,6 +31,7 @@ class Scalar:
     state: bool = False    # a continuous state (model exchange)
     derivative_of: int = None  # the value reference of the state this is der() of
     initial_depends: list = field(default_factory=list)  # states: parameters their start is from
+    computed_by: tuple = None  # derived outputs: (core function, argument names...)
 
 
 @dataclass
@@ -114,10 +115,11 @@ def load(name):
             scalars.append(Scalar(
                 name=_element_name(entry["name"], indices), base=entry["name"], indices=indices,
                 vr=entry["vr"] + offset, causality=entry["causality"], type=declared,
-                fmi_type=fmi_type, group=entry.get("group", "main"), start=start, min=low,
+                fmi_type=fmi_type, group=_group(entry), start=start, min=low,
                 max=high, description=entry["description"].format(**keys),
                 depends=entry.get("depends", []), state=entry.get("state", False),
-                initial_depends=entry.get("initial_depends", [])))
+                initial_depends=entry.get("initial_depends", []),
+                computed_by=tuple(entry["computed_by"]) if "computed_by" in entry else None))
             if "derivative_of" in entry:
                 scalars[-1].derivative_of = _element_name(entry["derivative_of"], indices)
     by_name = {s.name: s for s in scalars}
@@ -135,7 +137,12 @@ def load(name):
                 vrs += [t.vr for t in scalars if t.base == name]
         return sorted(vrs)
 
-    for s in scalars:
+    for s in sorted(scalars, key=lambda s: s.vr):
+        if s.computed_by and "depends" not in _entry(d, s.base):
+            # A derived output depends on what its arguments depend on (their vrs are lower).
+            s.depends = sorted({vr for t in scalars if t.base in s.computed_by[1:]
+                                for vr in t.depends})
+            continue
         wanted = s.depends(*s.indices) if callable(s.depends) else s.depends
         s.depends = resolve(wanted)
         assert all(t.causality == "input" or t.state for t in scalars if t.vr in s.depends), \
@@ -147,14 +154,44 @@ def load(name):
     return Model(
         name=d.NAME, c_prefix=getattr(d, "C_PREFIX", d.NAME.upper()), guid=d.GUID, description=d.DESCRIPTION,
         model_description=ROOT / d.MODEL_DESCRIPTION,
-        sources=[f"{folder}/{source}" for source in d.SOURCES] + [f"{folder}/{name}_variables.c"],
+        sources=([f"{folder}/{source}" for source in d.SOURCES] +
+                 [f"{folder}/{name}_variables.c", f"{folder}/{name}_derived.c"]),
         headers=[f"{folder}/{name}_variables.h"],
         capabilities=d.CAPABILITIES, enumerations=enumerations, arrays=d.VARIABLES,
         scalars=scalars)
 
 
+def _group(entry):
+    """An output computed from outputs is of the derived group: computed only when read."""
+    if "computed_by" in entry:
+        assert "group" not in entry, f"{entry['name']}: computed_by outputs are of their own group"
+        return "derived"
+    return entry.get("group", "main")
+
+
+def _entry(description, base):
+    return next(e for e in description.VARIABLES if e["name"] == base)
+
+
+def _check_derived(name, scalars):
+    """A derived output (`computed_by`) is computed from outputs of its own model that come
+    before it in value-reference order."""
+    for s in scalars:
+        if not s.computed_by:
+            continue
+        assert s.causality == "output", f"{name}: {s.name} is computed_by a core function: an output"
+        for argument in s.computed_by[1:]:
+            found = [t for t in scalars if t.base == argument]
+            assert found, f"{name}: {s.name}: no variable {argument} to compute it from"
+            for t in found:
+                assert t.causality == "output" and t.vr < s.vr, (
+                    f"{name}: {s.name} is computed from {t.name}: an output with a lower value "
+                    "reference")
+
+
 def _check(name, scalars):
     """The rules the FMI layers rely on (models/model.h)."""
+    _check_derived(name, scalars)
     vrs = [s.vr for s in scalars]
     assert len(set(vrs)) == len(vrs), f"{name}: a value reference is used twice"
     inputs = sorted(s.vr for s in scalars if s.causality == "input")

@@ -71,7 +71,7 @@ CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h",
                 "core/kinematics_general_jacobian.h", "core/attitude.h"]
 # beside every model
 MODEL_SOURCES = ["models/model_data.c", "models/model_log.c", "models/model_outputs.c",
-                 "models/model_state_image.c"]
+                 "models/model_state_image.c", "models/model_derived.c"]
 FMI2_SOURCES = ["fmi2/fmi2_instance.c", "fmi2/fmi2_logging.c", "fmi2/fmi2_state_machine.c",
                 "fmi2/fmi2_lifecycle.c", "fmi2/fmi2_values.c", "fmi2/fmi2_cosimulation.c",
                 "fmi2/fmi2_model_exchange.c", "fmi2/fmi2_derivatives.c", "fmi2/fmi2_fmu_state.c"]

@@ -495,3 +495,21 @@ ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame fra
     }
     return (*distance < tolerance) ? AK_RATES_NEAR_SINGULAR : AK_RATES_OK;
 }
+
+static double vector_part_norm(const double q[4]) {
+    return sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+}
+
+void ak_rotation_angle(const double q[4], double *angle) {
+    *angle = 2.0 * atan2(vector_part_norm(q), q[0]);
+}
+
+void ak_rotation_angle_tangent(const double q[4], const double dq[4], double *d_angle) {
+    const double s = vector_part_norm(q);
+    if (s == 0.0) {
+        *d_angle = 0.0;
+        return;
+    }
+    const double ds = (q[1] * dq[1] + q[2] * dq[2] + q[3] * dq[3]) / s;
+    *d_angle = 2.0 * (q[0] * ds - s * dq[0]) / (q[0] * q[0] + s * s);
+}

@@ -69,6 +69,15 @@
  *   OVERFLOW when a result is not finite. On AK_RATES_SINGULAR and AK_RATES_OVERFLOW nothing but
  *   the distance is written. (A NaN theta2 also gives AK_RATES_SINGULAR; validating inputs is
  *   the caller's job.)
+ *
+ * 7. Rotation angle
+ *   The angle of the one rotation about a fixed axis that takes N to B (Euler's theorem), from
+ *   q = (q0, v) of section 5 (q0 >= 0, |q| = 1):
+ *       angle = 2 atan2(|v|, q0)   in [0, pi],
+ *   continuous everywhere, where q jumps to -q too (q0 = 0: angle = pi either way). Along a change
+ *   dq of q, with s = |v| and ds = (v . dv) / s,
+ *       d angle = 2 (q0 ds - s dq0) / (q0^2 + s^2),
+ *   which has no limit at s = 0 (angle = 0 is a kink, like |x| at 0): 0 is returned there.
  */
 #ifndef ANGULAR_KINEMATICS_KINEMATICS_GENERAL_H
 #define ANGULAR_KINEMATICS_KINEMATICS_GENERAL_H
@@ -136,6 +145,11 @@ void ak_general_all_outputs(const ak_sequence *sequence, const ak_sines *sines,
                             double R[3][3], double q[4], double W_fixed[3][3],
                             double W_body[3][3], double W_fixed_dot[3][3],
                             double W_body_dot[3][3]);
+
+/* The rotation angle of q (section 7), and its change along dq (the tangent: what the
+ * derivatives of an output computed from q need, models/model_derived.c). */
+void ak_rotation_angle(const double q[4], double *angle);
+void ak_rotation_angle_tangent(const double q[4], const double dq[4], double *d_angle);
 
 /* Direction cosine matrix R (row-major, v_fixed = R v_body). */
 void ak_general_rotation_matrix(const ak_sequence *sequence, const double theta[3], double R[3][3]);

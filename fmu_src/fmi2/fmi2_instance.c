@@ -21,7 +21,9 @@ static ak_real_role real_role(const ak_variable *variable) {
         return AK_REAL_PARAMETER;
     case AK_CAUSALITY_OUTPUT:
     default:
-        return variable->group == AK_GROUP_LAZY ? AK_REAL_LAZY_OUTPUT : AK_REAL_MAIN_OUTPUT;
+        return variable->group == AK_GROUP_DERIVED ? AK_REAL_DERIVED_OUTPUT
+               : variable->group == AK_GROUP_LAZY  ? AK_REAL_LAZY_OUTPUT
+                                                   : AK_REAL_MAIN_OUTPUT;
     }
 }
 
@@ -57,12 +59,12 @@ bool ak_is_state(unsigned int vr) {
 }
 
 /* The outputs up to date (models/model_outputs.c), what ran traced in logCalls. */
-static ak_eval_status update(ak_instance *instance, bool with_lazy) {
+static ak_eval_status update(ak_instance *instance, ak_group upto) {
     unsigned int ran;
     const bool in_initialization =
         (instance->state & (AK_STATE_INSTANTIATED | AK_STATE_INITIALIZATION_MODE)) != 0;
     const ak_eval_status status =
-        ak_outputs_update(&instance->outputs, &instance->data, in_initialization, with_lazy, &ran);
+        ak_outputs_update(&instance->outputs, &instance->data, in_initialization, upto, &ran);
     if (ran != 0 && ak_log_on(instance, AK_LOG_CALLS)) {
         if (ran & AK_RAN_MAIN) {
             ak_log(instance, AK_LOG_CALLS, fmi2OK, "kinematics evaluated (evaluation %lu%s)",
@@ -72,16 +74,23 @@ static ak_eval_status update(ak_instance *instance, bool with_lazy) {
         if (ran & AK_RAN_LAZY) {
             ak_log(instance, AK_LOG_CALLS, fmi2OK, "lazy outputs evaluated");
         }
+        if (ran & AK_RAN_DERIVED) {
+            ak_log(instance, AK_LOG_CALLS, fmi2OK, "derived outputs evaluated");
+        }
     }
     return status;
 }
 
 ak_eval_status ak_instance_update_outputs(ak_instance *instance) {
-    return update(instance, false);
+    return update(instance, AK_GROUP_MAIN);
 }
 
 ak_eval_status ak_instance_update_all_outputs(ak_instance *instance) {
-    return update(instance, true);
+    return update(instance, AK_GROUP_LAZY);
+}
+
+ak_eval_status ak_instance_update_derived_outputs(ak_instance *instance) {
+    return update(instance, AK_GROUP_DERIVED);
 }
 
 fmi2Status ak_instance_read_status(const ak_instance *instance, ak_eval_status status) {

@@ -34,6 +34,7 @@ typedef enum {
     AK_REAL_PARAMETER,
     AK_REAL_MAIN_OUTPUT,
     AK_REAL_LAZY_OUTPUT,
+    AK_REAL_DERIVED_OUTPUT,
     AK_N_REAL_ROLES
 } ak_real_role;
 
@@ -94,6 +95,9 @@ ak_eval_status ak_instance_update_outputs(ak_instance *instance);
 
 /* The same, and the lazy output group too. */
 ak_eval_status ak_instance_update_all_outputs(ak_instance *instance);
+
+/* The same, and the derived outputs too (models/model.h, ak_derived_outputs). */
+ak_eval_status ak_instance_update_derived_outputs(ak_instance *instance);
 
 /* The FMI status a read of outputs returns after an evaluation with that result: fmi2OK,
  * fmi2Warning, or fmi2Discard when it failed (both interfaces; see fmi2_instance.c). */

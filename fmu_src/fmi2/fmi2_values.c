@@ -39,6 +39,38 @@ static bool ak_consecutive(const fmi2ValueReference vr[], size_t nvr) {
            memcmp(vr, &EVERY_VALUE_REFERENCE[vr[0]], nvr * sizeof vr[0]) == 0;
 }
 
+/* The length n (1 <= n <= nvr) of a run of consecutive value references that starts vr: found by
+ * bisection on vr[k] == vr[0] + k, which holds for a prefix of k when vr increases (fmpy's record
+ * of every output skips the parameters among them), then checked whole, so that any vr gives a
+ * true run. A value reference past the table is a run of 1. */
+static size_t run_length(const fmi2ValueReference vr[], size_t nvr) {
+    size_t in_run = 1, past = nvr; /* vr[in_run - 1] is in the run; vr[past] is not (or none) */
+    while (in_run < past) {
+        const size_t mid = in_run + (past - in_run) / 2;
+        if (vr[mid] == vr[0] + mid) {
+            in_run = mid + 1;
+        } else {
+            past = mid;
+        }
+    }
+    return ak_consecutive(vr, in_run) ? in_run : 1;
+}
+
+/* vr as at most AK_MAX_RUNS runs of consecutive value references: their lengths, and how many;
+ * 0 when it takes more (then value by value is cheaper). */
+enum { AK_MAX_RUNS = 8 };
+static size_t split_into_runs(const fmi2ValueReference vr[], size_t nvr,
+                              size_t lengths[AK_MAX_RUNS]) {
+    size_t runs = 0;
+    for (size_t i = 0; i < nvr; i += lengths[runs++]) {
+        if (runs == AK_MAX_RUNS) {
+            return 0;
+        }
+        lengths[runs] = run_length(&vr[i], nvr - i);
+    }
+    return runs;
+}
+
 static const char *type_name(ak_type type) {
     return type == AK_TYPE_INTEGER ? "Integer" : "Real";
 }
@@ -112,9 +144,17 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
      * Consecutive value references are the usual get: their roles come from the run's ends and
      * their values from one copy. */
     const bool run = ak_consecutive(vr, nvr);
+    /* Else a few runs (fmpy's record of every output), each read like one. */
+    size_t lengths[AK_MAX_RUNS];
+    const size_t runs = run ? 0 : split_into_runs(vr, nvr, lengths);
     unsigned int roles = 0;
     if (run) {
         roles = ak_real_roles_of_run(instance, vr[0], nvr);
+    } else if (runs > 0) {
+        for (size_t r = 0, i = 0; r < runs; i += lengths[r++]) {
+            roles |= vr[i] < AK_MAX_VARIABLES ? ak_real_roles_of_run(instance, vr[i], lengths[r])
+                                              : 1u << AK_REAL_ABSENT;
+        }
     } else {
         for (size_t i = 0; i < nvr; i++) {
             roles |= 1u << ak_real_role_of(instance, vr[i]);
@@ -129,13 +169,19 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         return fmi2Error;
     }
     fmi2Status status = fmi2OK;
-    if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
+    if (roles & (1u << AK_REAL_DERIVED_OUTPUT)) {
+        status = ak_instance_read_status(instance, ak_instance_update_derived_outputs(instance));
+    } else if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
         status = ak_instance_read_status(instance, ak_instance_update_all_outputs(instance));
     } else if (roles & (1u << AK_REAL_MAIN_OUTPUT)) {
         status = ak_instance_read_status(instance, ak_instance_update_outputs(instance));
     }
     if (run) {
         memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
+    } else if (runs > 0) {
+        for (size_t r = 0, i = 0; r < runs; i += lengths[r++]) {
+            memcpy(&value[i], &instance->data.values[vr[i]], lengths[r] * sizeof value[0]);
+        }
     } else {
         for (size_t i = 0; i < nvr; i++) {
             value[i] = instance->data.values[vr[i]];

@@ -111,7 +111,15 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance c, const fmi3ValueReference vr[
     if (!ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
         return fmi3Error;
     }
-    const fmi3Status status = ak3_read_status(ak3_instance_update_outputs(instance));
+    /* An output computed from others (models/model_derived.c) needs their values, lazy ones too. */
+    bool derived = false;
+    for (size_t i = 0; i < nvr; i++) {
+        unsigned int elements[AK_MAX_VARIABLES];
+        derived = derived || ak_model_any_derived(elements, expand(&vr[i], 1, elements,
+                                                                   AK_MAX_VARIABLES));
+    }
+    const fmi3Status status = ak3_read_status(derived ? ak3_instance_update_all_outputs(instance)
+                                                      : ak3_instance_update_outputs(instance));
     if (status == fmi3Discard) {
         return status;
     }
@@ -120,7 +128,7 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance c, const fmi3ValueReference vr[
     for (size_t i = 0; i < nvr; i++) {
         unsigned int elements[AK_MAX_VARIABLES];
         const size_t n = expand(&vr[i], 1, elements, AK_MAX_VARIABLES);
-        AK_MODEL.output_derivatives(&instance->data, elements, n, &values[k]);
+        ak_model_output_derivatives(&instance->data, elements, n, &values[k]);
         k += n;
     }
     return status;
@@ -184,7 +192,13 @@ static fmi3Status derivative(fmi3Instance c, ak3_function self, const char *flag
         unsigned int rows[AK_MAX_VARIABLES];
         const size_t n = expand(&unknowns[i], 1, rows, AK_MAX_VARIABLES);
         double J[AK_MAX_VARIABLES][AK_MAX_KNOWNS]; /* columns: the inputs, then the states */
-        AK_MODEL.jacobian(&instance->data, rows, n, J);
+        /* An output computed from others (models/model_derived.c) needs their values, lazy ones
+         * too; the others come from the inputs alone. */
+        if (ak_model_any_derived(rows, n) &&
+            ak3_read_status(ak3_instance_update_all_outputs(instance)) == fmi3Discard) {
+            return fmi3Discard;
+        }
+        ak_model_jacobian(&instance->data, rows, n, J);
         for (size_t r = 0; r < n; r++, row++) {
             size_t column = 0;
             double sum = 0.0;

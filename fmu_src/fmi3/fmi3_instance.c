@@ -23,12 +23,12 @@ void ak3_instance_reset(ak3_instance *instance) {
 }
 
 /* The outputs up to date (models/model_outputs.c), an evaluation traced in logCalls. */
-static ak_eval_status update(ak3_instance *instance, bool with_lazy) {
+static ak_eval_status update(ak3_instance *instance, ak_group upto) {
     unsigned int ran;
     const bool in_initialization =
         (instance->state & (AK3_STATE_INSTANTIATED | AK3_STATE_INITIALIZATION_MODE)) != 0;
     const ak_eval_status status =
-        ak_outputs_update(&instance->outputs, &instance->data, in_initialization, with_lazy, &ran);
+        ak_outputs_update(&instance->outputs, &instance->data, in_initialization, upto, &ran);
     if ((ran & AK_RAN_MAIN) && ak3_log_on(instance, AK_LOG_CALLS)) {
         ak3_log(instance, AK_LOG_CALLS, fmi3OK, "kinematics evaluated (evaluation %lu%s)",
                 instance->outputs.evaluations, (ran & AK_RAN_ALL) ? ", with the lazy outputs" : "");
@@ -37,11 +37,15 @@ static ak_eval_status update(ak3_instance *instance, bool with_lazy) {
 }
 
 ak_eval_status ak3_instance_update_outputs(ak3_instance *instance) {
-    return update(instance, false);
+    return update(instance, AK_GROUP_MAIN);
 }
 
 ak_eval_status ak3_instance_update_all_outputs(ak3_instance *instance) {
-    return update(instance, true);
+    return update(instance, AK_GROUP_LAZY);
+}
+
+ak_eval_status ak3_instance_update_outputs_upto(ak3_instance *instance, ak_group upto) {
+    return update(instance, upto);
 }
 
 fmi3Status ak3_read_status(ak_eval_status status) {

@@ -58,6 +58,8 @@ void ak3_free_all_fmu_states(ak3_instance *instance);
  * evaluating only if an input or parameter changed; returns the status the outputs come from. */
 ak_eval_status ak3_instance_update_outputs(ak3_instance *instance);
 ak_eval_status ak3_instance_update_all_outputs(ak3_instance *instance);
+/* The groups up to `upto` (AK_GROUP_DERIVED: every output). */
+ak_eval_status ak3_instance_update_outputs_upto(ak3_instance *instance, ak_group upto);
 
 /* fmi3OK, fmi3Warning, or fmi3Discard for an evaluation that failed (outputs of the last
  * successful one). */

@@ -137,10 +137,10 @@ static bool arguments_given(const ak3_instance *instance, ak3_function function,
 /* The usual get of every communication point: arrays of outputs (their first value references),
  * exactly nValues elements in all. Anything else takes the checked path. *lazy: one of them is
  * of the lazy group; *one_run: they follow each other in the value array (one copy serves). */
-static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values, bool *lazy,
+static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values, ak_group *upto,
                       bool *one_run) {
     size_t total = 0;
-    *lazy = false;
+    *upto = AK_GROUP_MAIN;
     *one_run = true;
     if (nvr == 0) {
         return false; /* nothing to read: the checked path answers it */
@@ -150,7 +150,9 @@ static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values
         if (array == NULL || AK_MODEL.variables[vr[i]].causality != AK_CAUSALITY_OUTPUT) {
             return false;
         }
-        *lazy |= AK_MODEL.variables[vr[i]].group == AK_GROUP_LAZY;
+        if (AK_MODEL.variables[vr[i]].group > *upto) {
+            *upto = AK_MODEL.variables[vr[i]].group;
+        }
         *one_run &= vr[i] == vr[0] + total;
         total += array->n_elements;
     }
@@ -224,10 +226,10 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
     }
-    bool lazy_read, one_run;
-    if (usual_get(vr, nvr, nValues, &lazy_read, &one_run)) {
-        const fmi3Status status = ak3_read_status(
-            lazy_read ? ak3_instance_update_all_outputs(instance) : ak3_instance_update_outputs(instance));
+    ak_group upto;
+    bool one_run;
+    if (usual_get(vr, nvr, nValues, &upto, &one_run)) {
+        const fmi3Status status = ak3_read_status(ak3_instance_update_outputs_upto(instance, upto));
         if (one_run) {
             memcpy(values, &instance->data.values[vr[0]], nValues * sizeof values[0]);
         } else {
@@ -235,7 +237,8 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         }
         return status;
     }
-    bool main = false, lazy = false;
+    bool main = false;
+    ak_group highest = AK_GROUP_MAIN;
     size_t total = 0;
     for (size_t i = 0; i < nvr; i++) {
         if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
@@ -251,7 +254,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         if (variable->causality == AK_CAUSALITY_OUTPUT ||
             variable->causality == AK_CAUSALITY_LOCAL) {
             main = true;
-            lazy = lazy || variable->group == AK_GROUP_LAZY;
+            highest = variable->group > highest ? variable->group : highest;
         }
         total += array->n_elements;
     }
@@ -260,8 +263,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     }
     fmi3Status status = fmi3OK;
     if (main) {
-        status = ak3_read_status(lazy ? ak3_instance_update_all_outputs(instance)
-                                      : ak3_instance_update_outputs(instance));
+        status = ak3_read_status(ak3_instance_update_outputs_upto(instance, highest));
     }
     copy_out(instance, vr, nvr, values);
     return status;

@@ -43,8 +43,10 @@ typedef enum {
 } ak_causality;
 typedef enum { AK_TYPE_REAL, AK_TYPE_INTEGER } ak_type;
 /* Outputs of the main group are computed by evaluate whenever an input changed and an output is
- * read; those of the lazy group by evaluate_lazy, only when one of them is read. */
-typedef enum { AK_GROUP_MAIN, AK_GROUP_LAZY } ak_group;
+ * read; those of the lazy group by evaluate_lazy, only when one of them is read; the derived ones
+ * (ak_derived_outputs) from the other outputs, only when one of them is read. In increasing order
+ * of what a read brings up to date. */
+typedef enum { AK_GROUP_MAIN, AK_GROUP_LAZY, AK_GROUP_DERIVED } ak_group;
 
 typedef struct {
     unsigned int value_reference;
@@ -78,6 +80,25 @@ typedef struct {
     void (*log)(void *owner, ak_log_category category, ak_status status, const char *message);
     void *owner;
 } ak_model_data;
+
+/* The outputs a model computes from its other outputs by core functions that its description
+ * names (`computed_by`), generated into <Model>_derived.c; their group is AK_GROUP_DERIVED. The FMI
+ * layers reach them only through ak_outputs_update, ak_model_jacobian and
+ * ak_model_output_derivatives. */
+typedef struct {
+    size_t n_outputs;
+    const unsigned int *outputs; /* their value references, element by element */
+    /* The value references of the outputs they are computed from that are not derived
+     * themselves: the rows the model's Jacobian gives for the derived ones' chain rule. */
+    size_t n_arguments;
+    const unsigned int *arguments;
+    /* Writes the derived outputs into values, from the other outputs (both groups current). */
+    void (*compute)(double values[]);
+    /* The derived outputs' changes, tangents[vr], from the arguments' changes tangents[vr] in
+     * one direction (forward mode: each core function's `_tangent` twin); NULL when the model
+     * gives no derivatives. */
+    void (*tangents)(const double values[], double tangents[]);
+} ak_derived_outputs;
 
 /* Result of an evaluation. AK_EVAL_WARNING: outputs written and valid, the model logged why it
  * warns. AK_EVAL_FAILED: nothing written, the model logged why; the outputs keep their last
@@ -114,6 +135,8 @@ typedef struct {
     void (*output_derivatives)(ak_model_data *data, const unsigned int vr[], size_t nvr,
                                double value[]);
     bool can_interpolate_inputs;
+    /* The outputs computed from others by core functions (generated; n_outputs 0 when none). */
+    const ak_derived_outputs *derived;
     /* True for a model whose evaluation can fail, or whose outputs depend on the path (the
      * unwrapped angles of AttitudePropagator): fmi2DoStep and fmi3DoStep then evaluate at the
      * end of the step and return fmi2Discard (StepFailed) / fmi3Discard when it fails. */
@@ -159,6 +182,25 @@ void ak_log_categories_reset(bool enabled[AK_N_LOG_CATEGORIES], bool calls);
 bool ak_log_categories_set(const ak_model_data *data, const char *function,
                            bool enabled[AK_N_LOG_CATEGORIES], size_t n,
                            const char *const categories[], bool on);
+
+/* The derived outputs (AK_MODEL.derived), once both groups are current. */
+static inline void ak_model_compute_derived(ak_model_data *data) {
+    if (AK_MODEL.derived != NULL && AK_MODEL.derived->n_outputs > 0) {
+        AK_MODEL.derived->compute(data->values);
+    }
+}
+
+/* Whether one of the value references is a derived output: its derivatives are computed from
+ * the current values of its arguments, which the layer then brings up to date, lazy ones too. */
+bool ak_model_any_derived(const unsigned int vr[], size_t n);
+
+/* What the FMI layers call for AK_MODEL.jacobian and AK_MODEL.output_derivatives (same
+ * contract; models/model_derived.c): the model's own for its outputs, the chain rule through
+ * AK_MODEL.derived's tangents for a derived one. Call only when the model's function is not NULL. */
+void ak_model_jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,
+                       double J[][AK_MAX_KNOWNS]);
+void ak_model_output_derivatives(ak_model_data *data, const unsigned int vr[], size_t nvr,
+                                 double value[]);
 
 /* The variable of a value reference, or NULL when the model has none. */
 static inline const ak_variable *ak_variable_of(unsigned int vr) {

@@ -13,6 +13,8 @@ typedef struct {
     bool stale;
     /* The main group was computed since the lazy group was (computed only when read). */
     bool lazy_stale;
+    /* A group was computed since the derived outputs were (computed only when read). */
+    bool derived_stale;
     /* Of the evaluation the outputs come from: on AK_EVAL_FAILED they hold the values of the last
      * successful one, and a read answers as the layer says until an input changes. */
     ak_eval_status status;
@@ -24,7 +26,8 @@ typedef struct {
 enum {
     AK_RAN_MAIN = 1 << 0, /* evaluate, or evaluate_all (then also AK_RAN_ALL) */
     AK_RAN_ALL = 1 << 1,  /* evaluate_all: both groups in one pass */
-    AK_RAN_LAZY = 1 << 2  /* evaluate_lazy, after a main group already current */
+    AK_RAN_LAZY = 1 << 2,   /* evaluate_lazy, after a main group already current */
+    AK_RAN_DERIVED = 1 << 3 /* the derived outputs (AK_MODEL.derived) */
 };
 
 /* Everything stale, nothing evaluated yet. */
@@ -36,11 +39,11 @@ static inline void ak_outputs_inputs_changed(ak_outputs *outputs) {
     outputs->stale = true;
 }
 
-/* Brings the main group (with_lazy: both groups) up to date with data->values, running the
- * model only for what is stale; in_initialization: the states still follow the parameters
- * (AK_MODEL.initialize runs first). Returns the status of the evaluation the outputs come from;
+/* Brings the groups up to `upto` (main; main and lazy; every output) up to date with
+ * data->values, running the model only for what is stale; in_initialization: the states still
+ * follow the parameters (AK_MODEL.initialize runs first). Returns the status of the evaluation the outputs come from;
  * *ran the AK_RAN_ flags of what ran (0: nothing, or initialize failed). */
 ak_eval_status ak_outputs_update(ak_outputs *outputs, ak_model_data *data, bool in_initialization,
-                                 bool with_lazy, unsigned int *ran);
+                                 ak_group upto, unsigned int *ran);
 
 #endif

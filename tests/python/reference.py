@@ -172,6 +172,17 @@ KINEMATICS_OUTPUTS = ([f"{b}[{i}]" for b in ("omega_fixed", "omega_body", "alpha
                       [f"R[{i},{j}]" for i in (1, 2, 3) for j in (1, 2, 3)] +
                       [f"{b}[{i},{j}]" for b in ("W_fixed", "W_body", "W_fixed_dot", "W_body_dot")
                        for i in (1, 2, 3) for j in (1, 2, 3)])
+# AngularKinematics' outputs that the FMU computes from its other outputs (computed_by in its
+# description), here each from the reference's R by a formula of its own.
+DERIVED_OUTPUTS = ["rotation_angle"]
+
+
+def derived_values(rotation):
+    """The DERIVED_OUTPUTS for R (9 mpmath values, row-major): the rotation angle from the trace,
+    trace R = 1 + 2 cos(angle)."""
+    return [mpmath.acos((rotation[0] + rotation[4] + rotation[8] - 1) / 2)]
+
+
 RATES_INPUTS = [f"{b}[{i}]" for b in ("theta", "omega", "omega_dot") for i in (1, 2, 3)]
 RATES_OUTPUTS = [f"{b}[{i}]" for b in ("theta_dot", "theta_ddot", "alpha_fixed", "alpha_body")
                  for i in (1, 2, 3)]
@@ -183,6 +194,12 @@ def kinematics_values(name, inputs):
     values += list(_functions(name)[1](*_mp(inputs[:3])))
     values += list(_functions(name)[2](*_mp(inputs[:6])))
     return values
+
+
+def kinematics_and_derived_values(name, inputs):
+    """kinematics_values, then the DERIVED_OUTPUTS."""
+    values = kinematics_values(name, inputs)
+    return values + derived_values(values[12:21])
 
 
 def rates_values(name, frame, inputs):
@@ -218,15 +235,17 @@ def dependencies(evaluate, inputs_names, output_names, states, step=0.25):
 
 
 # --- The FMU's outputs in its value-reference order, and their exact derivatives --------------------
-# AngularKinematics' 61 outputs: omega_fixed, omega_body, alpha_fixed, alpha_body (12), R (9, row-major),
-# q (4, scalar first), W_fixed, W_body, W_fixed_dot, W_body_dot (36).
+# AngularKinematics' outputs: omega_fixed, omega_body, alpha_fixed, alpha_body (12), R (9, row-major),
+# q (4, scalar first), W_fixed, W_body, W_fixed_dot, W_body_dot (36), then the DERIVED_OUTPUTS.
+FMU_OUTPUTS = (KINEMATICS_OUTPUTS[:21] + [f"q[{k}]" for k in (1, 2, 3, 4)] + KINEMATICS_OUTPUTS[21:] +
+               DERIVED_OUTPUTS)
 
 def fmu_outputs_mp(name, inputs):
-    """The 61 outputs for 9 mpmath inputs (theta, theta_dot, theta_ddot), as mpmath numbers."""
+    """The FMU_OUTPUTS for 9 mpmath inputs (theta, theta_dot, theta_ddot), as mpmath numbers."""
     kinematics_fn, rotation_fn, partials_fn = _functions(name)
     rotation = list(rotation_fn(*inputs[:3]))
     return (list(kinematics_fn(*inputs)) + rotation + list(_quaternion_mp(_matrix(rotation))) +
-            list(partials_fn(*inputs[:6])))
+            list(partials_fn(*inputs[:6])) + derived_values(rotation))
 
 
 def fmu_outputs(name, inputs):
@@ -235,7 +254,7 @@ def fmu_outputs(name, inputs):
 
 
 def fmu_jacobian(name, inputs):
-    """d output / d input (61 x 9) by central differences on the 40-digit reference with a step of
+    """d output / d input (one row per FMU_OUTPUTS, 9 columns) by central differences on the 40-digit reference with a step of
     1e-12: truncation ~1e-24, rounding ~1e-28, far below double precision. (Near q0 = 0 the sign
     choice of q jumps; callers keep away from it.)"""
     with mpmath.workdps(DIGITS):

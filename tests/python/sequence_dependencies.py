@@ -36,16 +36,17 @@ def main():
     states = rng.uniform(-2, 2, (2, 9))
     forward, rates = {}, {}
     for name in SEQUENCES:
-        forward[name] = reference.dependencies(lambda x: reference.kinematics_values(name, x),
-                                               reference.KINEMATICS_INPUTS,
-                                               reference.KINEMATICS_OUTPUTS, states)
+        forward[name] = reference.dependencies(
+            lambda x: reference.kinematics_and_derived_values(name, x), reference.KINEMATICS_INPUTS,
+            reference.KINEMATICS_OUTPUTS + reference.DERIVED_OUTPUTS, states)
         for frame in ("fixed", "body"):
             rates[name, frame] = reference.dependencies(
                 lambda x: reference.rates_values(name, frame, x), reference.RATES_INPUTS,
                 reference.RATES_OUTPUTS, states)
     print(table("AngularKinematics (q[1..4]: theta[1..3] for every sequence; "
                 "singularity_distance: theta[2] alone)",
-                reference.KINEMATICS_OUTPUTS, reference.KINEMATICS_INPUTS, forward))
+                reference.KINEMATICS_OUTPUTS + reference.DERIVED_OUTPUTS, reference.KINEMATICS_INPUTS,
+                forward))
     print()
     print(table("EulerRates (union over sequences and over the frame parameter)",
                 reference.RATES_OUTPUTS, reference.RATES_INPUTS, rates))

@@ -69,7 +69,9 @@ def test_adjoint_is_the_transpose_and_zeros_are_the_dependencies():
             assert instance.call("fmi3GetVariableDependencies", instance.vr[name], dependent,
                                  independents, elements, kinds, k) == OK
             scalars = [s for s in m.scalars if s.base == name]
-            expected = sorted((e + 1, d) for e, s in enumerate(scalars) for d in s.depends)
+            # Element indices 1-based, row-major; 0 for a scalar.
+            expected = sorted((e + 1 if s.indices else 0, d) for e, s in enumerate(scalars)
+                              for d in s.depends)
             got = sorted((dependent[i], independents[i] + elements[i] - 1) for i in range(k))
             assert got == expected, name
             assert set(kinds) <= {5}  # fmi3Dependent

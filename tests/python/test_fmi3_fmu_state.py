@@ -1,18 +1,18 @@
 """FMI 3 FMU state (canGetAndSetFMUState, canSerializeFMUState): a state got, or serialized and
 deserialized (also into another instance), brings back time, inputs, parameters, continuous
 states (AttitudePropagator's q and its co-simulation memory) and so the outputs bit for bit; the
-serialized form is self-contained, versioned and checksummed (92 + 8 N bytes: 660
-AngularKinematics, 292 EulerRates, 564 AttitudePropagator), and damaged, truncated, foreign (an FMI 2 state, the other
+serialized form is self-contained, versioned and checksummed (92 + 8 N bytes, N the value
+references of the model's FMI 2 scalars), and damaged, truncated, foreign (an FMI 2 state, the other
 model's) or freed states are refused with a message, changing nothing."""
 import ctypes
 
 import numpy as np
 import pytest
 
-from conftest import Instance
+from conftest import Instance, value_references_of
 from fmi3_support import MODELS, ERROR, OK, Instance3
 
-SIZES = {"AngularKinematics": 660, "EulerRates": 292, "AttitudePropagator": 564}
+SIZES = {model: 92 + 8 * len(value_references_of(model)) for model in MODELS}
 # The two input arrays set before the first step, then changed.
 INPUTS = {"AngularKinematics": ("theta", "theta_dot"), "EulerRates": ("theta", "omega"),
           "AttitudePropagator": ("omega", "omega_dot")}

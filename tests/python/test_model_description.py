@@ -118,8 +118,14 @@ def test_variables_agree_with_c_table(model):
 
 
 def test_names_units_and_display_units(model):
+    """The variables of 0.3.0 stay, in their order; a variable added since comes after them (it
+    takes a new value reference above every one in use)."""
     description = model["description"]
-    assert [v.name for v in description.modelVariables] == model["names"]
+    names = [v.name for v in description.modelVariables]
+    assert names[:len(model["names"])] == model["names"]
+    added = description.modelVariables[len(model["names"]):]
+    assert all(v.valueReference > max(w.valueReference for w in description.modelVariables
+                                      if w.name in model["names"]) for v in added)
     units = {u.name: [d.name for d in u.displayUnits] for u in description.unitDefinitions}
     for variable in description.modelVariables:
         unit = variable.declaredType.unit

@@ -1,15 +1,19 @@
 """fmi2GetReal and fmi2SetReal give the same results whatever the order of the value references:
 a run of consecutive references (copied as a block) and any other order (checked one by one)."""
 import ctypes
+import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
 
 import reference
-from conftest import value_references_of
+from conftest import description_path_of
 
-# The first value reference past AngularKinematics' last (a new variable takes it).
-PAST = len(value_references_of("AngularKinematics"))
+# The first value reference past AngularKinematics' last (a new variable takes it), and the Real
+# ones below it, so that a run starts valid and goes past the end.
+_VARIABLES = list(ET.parse(description_path_of("AngularKinematics")).getroot().iter("ScalarVariable"))
+PAST = max(int(v.get("valueReference")) for v in _VARIABLES) + 1
+REALS = sorted(int(v.get("valueReference")) for v in _VARIABLES if v.find("Real") is not None)
 
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -1.1, 2.0, 0.7, -0.4, 1.9, 3.0, -2.5, 0.25]))
 
@@ -48,8 +52,8 @@ def test_every_order_gives_the_same_values(instance):
             assert get_raw(instance, run) == (0, [in_order[vr] for vr in run])
 
 
-@pytest.mark.parametrize("vrs", [[PAST - 2, PAST], [PAST - 3, PAST - 2, PAST, PAST + 1], [2**32 - 1],
-                                 [2**32 - 1, 0]])
+@pytest.mark.parametrize("vrs", [[REALS[-2], PAST], [REALS[-3], REALS[-2], PAST, PAST + 1],
+                                 [2**32 - 1], [2**32 - 1, 0]])
 def test_run_past_the_last_reference_is_refused(vrs, instance):
     status, values = get_raw(instance, vrs)
     assert status == 3

@@ -74,4 +74,5 @@ const ak_variable AK_VARIABLES[AK_N_VALUE_REFERENCES] = {
     [68] = {68, "W_body_dot[3,2]", AK_CAUSALITY_OUTPUT, AK_TYPE_REAL, AK_GROUP_LAZY, "Frequency", "1/s", 0.0, 0.0, 0.0, "time derivative of W_body[3,2]", 4, {0, 2, 3, 5}},
     [69] = {69, "W_body_dot[3,3]", AK_CAUSALITY_OUTPUT, AK_TYPE_REAL, AK_GROUP_LAZY, "Frequency", "1/s", 0.0, 0.0, 0.0, "time derivative of W_body[3,3]", 4, {0, 1, 3, 4}},
     [70] = {70, "sequence", AK_CAUSALITY_PARAMETER, AK_TYPE_INTEGER, AK_GROUP_MAIN, "Sequence", "", 1.0, 1.0, 24.0, "rotation sequence of the angles theta", 0, {0}},
+    [71] = {71, "rotation_angle", AK_CAUSALITY_OUTPUT, AK_TYPE_REAL, AK_GROUP_DERIVED, "Angle", "rad", 0.0, 0.0, 0.0, "angle of the rotation that takes the fixed frame to the body frame about one axis (Euler's theorem), in [0, pi]: 2 atan2(|(q[2], q[3], q[4])|, q[1])", 3, {0, 1, 2}},
 };

@@ -22,12 +22,14 @@ enum {
     AK_VR_W_BODY = 43,
     AK_VR_W_FIXED_DOT = 52,
     AK_VR_W_BODY_DOT = 61,
+    AK_VR_ROTATION_ANGLE = 71,
     AK_VR_SEQUENCE = 70,
     AK_N_INPUTS = 9,
-    AK_N_OUTPUTS = 61,
-    AK_N_VALUE_REFERENCES = 71 /* highest value reference + 1 */
+    AK_N_OUTPUTS = 62,
+    AK_N_VALUE_REFERENCES = 72 /* highest value reference + 1 */
 };
 
 extern const ak_variable AK_VARIABLES[AK_N_VALUE_REFERENCES];
+extern const ak_derived_outputs AK_DERIVED_OUTPUTS; /* AngularKinematics_derived.c */
 
 #endif

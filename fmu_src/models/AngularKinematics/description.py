@@ -71,6 +71,10 @@ VARIABLES = [
     dict(name="W_body_dot", vr=61, shape=(3, 3), causality="output", type="Frequency",
          group="lazy", description="time derivative of W_body[{i},{j}]",
          depends=_others_and_rates),
+    dict(name="rotation_angle", vr=71, causality="output", type="Angle",
+         description="angle of the rotation that takes the fixed frame to the body frame about "
+                     "one axis (Euler's theorem), in [0, pi]: 2 atan2(|(q[2], q[3], q[4])|, q[1])",
+         computed_by=("ak_rotation_angle", "q")),
     dict(name="sequence", vr=70, causality="parameter", type="Sequence", start="body123",
          description="rotation sequence of the angles theta"),
 ]

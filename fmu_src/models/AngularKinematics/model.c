@@ -10,7 +10,15 @@
 #include "kinematics_general_jacobian.h"
 
 _Static_assert(AK_N_VALUE_REFERENCES <= AK_MAX_VARIABLES, "the value array holds them");
-_Static_assert((int)AK_GENERAL_N_OUTPUTS == (int)AK_N_OUTPUTS, "a Jacobian row per output");
+/* The kernel's Jacobian has a row for each output of 0.3.0, omega_fixed[1] .. W_body_dot[3,3],
+ * whose value references are consecutive and never move. An output added since is computed from
+ * these by a core function (computed_by in description.py), its row by models/model_derived.c. */
+_Static_assert(AK_VR_W_BODY_DOT + 9 == AK_VR_OMEGA_FIXED + AK_GENERAL_N_OUTPUTS,
+               "a Jacobian row for each output the kernel computes");
+
+static unsigned int kernel_row(unsigned int vr) {
+    return vr - AK_VR_OMEGA_FIXED;
+}
 
 static const ak_sequence *sequence_of(const ak_model_data *data) {
     return &AK_SEQUENCES[(int)data->values[AK_VR_SEQUENCE] - 1];
@@ -86,7 +94,7 @@ static void jacobian(const ak_model_data *data, const unsigned int out[], size_t
                         &v[AK_VR_THETA_DDOT], full);
     for (size_t i = 0; i < n_out; i++) {
         for (int k = 0; k < AK_N_INPUTS; k++) {
-            J[i][k] = full[out[i] - AK_N_INPUTS][k];
+            J[i][k] = full[kernel_row(out[i])][k];
         }
     }
 }
@@ -116,7 +124,7 @@ static void output_derivatives(ak_model_data *data, const unsigned int vr[], siz
         }
         double sum = 0.0;
         for (int k = 0; k < AK_N_INPUTS; k++) {
-            sum += full[r - AK_N_INPUTS][k] * rates[k];
+            sum += full[kernel_row(r)][k] * rates[k];
         }
         value[i] = sum;
         if (jerk_assumed && r < AK_VR_R) {
@@ -141,5 +149,6 @@ const ak_model AK_MODEL = {
     .jacobian = jacobian,
     .output_derivatives = output_derivatives,
     .can_interpolate_inputs = true,
+    .derived = &AK_DERIVED_OUTPUTS,
     .evaluate_in_step = false, /* the evaluation never fails: it waits for a read */
 };

@@ -36,5 +36,6 @@ enum {
 };
 
 extern const ak_variable AP_VARIABLES[AP_N_VALUE_REFERENCES];
+extern const ak_derived_outputs AP_DERIVED_OUTPUTS; /* AttitudePropagator_derived.c */
 
 #endif

@@ -424,6 +424,7 @@ const ak_model AK_MODEL = {
     .jacobian = jacobian,
     .output_derivatives = NULL,
     .can_interpolate_inputs = true,
+    .derived = &AP_DERIVED_OUTPUTS,
     /* The unwrapped angles depend on the path: evaluated at every communication point. */
     .evaluate_in_step = true,
     .n_states = AP_N_STATES,

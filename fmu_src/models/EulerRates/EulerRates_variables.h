@@ -26,5 +26,6 @@ enum {
 };
 
 extern const ak_variable ER_VARIABLES[ER_N_VALUE_REFERENCES];
+extern const ak_derived_outputs ER_DERIVED_OUTPUTS; /* EulerRates_derived.c */
 
 #endif

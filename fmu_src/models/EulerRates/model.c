@@ -82,5 +82,6 @@ const ak_model AK_MODEL = {
     .jacobian = NULL,
     .output_derivatives = NULL,
     .can_interpolate_inputs = true,
+    .derived = &ER_DERIVED_OUTPUTS,
     .evaluate_in_step = true,
 };

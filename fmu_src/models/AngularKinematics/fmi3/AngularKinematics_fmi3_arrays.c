@@ -75,7 +75,8 @@ const ak3_array AK3_ARRAYS[AK_MAX_VARIABLES] = {
     [68] = {"W_body_dot", 61, 9, 2, 3, 3},
     [69] = {"W_body_dot", 61, 9, 2, 3, 3},
     [70] = {"sequence", 70, 1, 0, 1, 1},
+    [71] = {"rotation_angle", 71, 1, 0, 1, 1},
 };
 
-const int AK3_N_ARRAYS = 14;
+const int AK3_N_ARRAYS = 15;
 const unsigned int AK3_TIME_VALUE_REFERENCE = 1000;
