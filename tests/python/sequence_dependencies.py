@@ -3,8 +3,11 @@ union over sequences (and, for EulerRates, over both frames) that a static <Mode
 list. Computed on the independent sympy reference (reference.dependencies); the core is
 checked against the same sets by test_sequences_core.py::test_dependencies_match_reference.
 
-    .venv/bin/python tests/python/sequence_dependencies.py      (about half a minute)
+    .venv/bin/python tests/python/sequence_dependencies.py           print them (half a minute)
+    .venv/bin/python tests/python/sequence_dependencies.py --write   and write them into
+                                                                     docs/sequences.md
 """
+import argparse
 import pathlib
 import sys
 
@@ -31,7 +34,7 @@ def table(title, outputs, input_order, per_sequence):
     return "\n".join(lines)
 
 
-def main():
+def tables():
     rng = np.random.default_rng(20261121)
     states = rng.uniform(-2, 2, (2, 9))
     forward, rates = {}, {}
@@ -43,18 +46,34 @@ def main():
             rates[name, frame] = reference.dependencies(
                 lambda x: reference.rates_values(name, frame, x), reference.RATES_INPUTS,
                 reference.RATES_OUTPUTS, states)
-    print(table("AngularKinematics (q[1..4]: theta[1..3] for every sequence; "
-                "singularity_distance: theta[2] alone)",
-                reference.KINEMATICS_OUTPUTS + reference.DERIVED_OUTPUTS, reference.KINEMATICS_INPUTS,
-                forward))
-    print()
-    print(table("EulerRates (union over sequences and over the frame parameter)",
-                reference.RATES_OUTPUTS, reference.RATES_INPUTS, rates))
+    parts = [table("AngularKinematics (q[1..4]: theta[1..3] for every sequence; "
+                   "singularity_distance: theta[2] alone)",
+                   reference.KINEMATICS_OUTPUTS + reference.DERIVED_OUTPUTS,
+                   reference.KINEMATICS_INPUTS, forward),
+             table("EulerRates (union over sequences and over the frame parameter)",
+                   reference.RATES_OUTPUTS, reference.RATES_INPUTS, rates)]
     for frame in ("fixed", "body"):
-        print()
-        print(table(f"EulerRates, {frame}-frame inputs only", reference.RATES_OUTPUTS,
-                    reference.RATES_INPUTS,
-                    {name: rates[name, f] for name, f in rates if f == frame}))
+        parts.append(table(f"EulerRates, {frame}-frame inputs only", reference.RATES_OUTPUTS,
+                           reference.RATES_INPUTS,
+                           {name: rates[name, f] for name, f in rates if f == frame}))
+    return "\n\n".join(parts) + "\n"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--write", action="store_true",
+                        help="replace the tables of docs/sequences.md with these")
+    args = parser.parse_args()
+    text = tables()
+    if not args.write:
+        print(text, end="")
+        return
+    path = pathlib.Path(__file__).resolve().parents[2] / "docs" / "sequences.md"
+    doc = path.read_text()
+    start = doc.index("### AngularKinematics (")
+    end = doc.index("\n## ", start)
+    path.write_text(doc[:start] + text + doc[end:])
+    print(f"wrote the dependency tables of {path}")
 
 
 if __name__ == "__main__":
