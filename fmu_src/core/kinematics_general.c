@@ -501,7 +501,11 @@ static double vector_part_norm(const double q[4]) {
 }
 
 void ak_rotation_angle(const double q[4], double *angle) {
-    *angle = 2.0 * atan2(vector_part_norm(q), q[0]);
+    /* 2 atan2(s, q0) with s, q0 >= 0, as the atan of whichever ratio is at most 1: glibc's atan
+     * costs half its atan2 (about 80 against 165 instructions). */
+    static const double PI = 3.14159265358979323846;
+    const double s = vector_part_norm(q);
+    *angle = s < q[0] ? 2.0 * atan(s / q[0]) : s > 0.0 ? PI - 2.0 * atan(q[0] / s) : 0.0;
 }
 
 void ak_rotation_angle_tangent(const double q[4], const double dq[4], double *d_angle) {

@@ -35,6 +35,7 @@ void ak_instance_reset(ak_instance *instance) {
     instance->time = 0.0;
     instance->stop_time_defined = false;
     instance->stop_time = 0.0;
+    instance->last_runs.nvr = 0;
     for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
         instance->real_role[vr] = (unsigned char)real_role(ak_variable_of((unsigned int)vr));
     }

@@ -38,6 +38,16 @@ typedef enum {
     AK_N_REAL_ROLES
 } ak_real_role;
 
+/* A Real get split into runs of consecutive value references (at most AK_MAX_RUNS). */
+enum { AK_MAX_RUNS = 8 };
+typedef struct {
+    size_t nvr; /* 0: none kept */
+    fmi2ValueReference vr[AK_MAX_VARIABLES];
+    size_t n_runs;
+    size_t lengths[AK_MAX_RUNS];
+    unsigned int roles; /* 1 << role for each role read (ak_real_role) */
+} ak_get_runs;
+
 typedef struct ak_instance_s {
     fmi2CallbackFunctions functions; /* a copy: the master's struct need not outlive the call */
     char *instance_name;
@@ -64,6 +74,10 @@ typedef struct ak_instance_s {
     ak_outputs outputs;
     /* FMU states made by this instance and not yet freed (fmi2_fmu_state.c). */
     struct ak_fmu_state_s *live_states;
+    /* The last fmi2GetReal that read a few runs of consecutive value references rather than one
+     * (fmpy's record of every output skips the parameters among them), so that the same request
+     * at the next step costs one comparison (fmi2_values.c). */
+    ak_get_runs last_runs;
 } ak_instance;
 
 /* The role of a value reference in a Real get or set (AK_REAL_ABSENT for any out of range). */

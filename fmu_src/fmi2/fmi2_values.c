@@ -36,6 +36,7 @@ _Static_assert(AK_MAX_VARIABLES == 80, "EVERY_VALUE_REFERENCE lists them all");
 /* True when vr holds first, first + 1, .. (nvr >= 1) within the value array. */
 static bool ak_consecutive(const fmi2ValueReference vr[], size_t nvr) {
     return nvr > 0 && (size_t)vr[0] + nvr <= AK_MAX_VARIABLES &&
+           vr[nvr - 1] == vr[0] + nvr - 1 && /* cheap, and enough to rule most others out */
            memcmp(vr, &EVERY_VALUE_REFERENCE[vr[0]], nvr * sizeof vr[0]) == 0;
 }
 
@@ -56,19 +57,45 @@ static size_t run_length(const fmi2ValueReference vr[], size_t nvr) {
     return ak_consecutive(vr, in_run) ? in_run : 1;
 }
 
-/* vr as at most AK_MAX_RUNS runs of consecutive value references: their lengths, and how many;
- * 0 when it takes more (then value by value is cheaper). */
-enum { AK_MAX_RUNS = 8 };
-static size_t split_into_runs(const fmi2ValueReference vr[], size_t nvr,
-                              size_t lengths[AK_MAX_RUNS]) {
-    size_t runs = 0;
-    for (size_t i = 0; i < nvr; i += lengths[runs++]) {
-        if (runs == AK_MAX_RUNS) {
-            return 0;
+/* vr as at most AK_MAX_RUNS runs of consecutive value references into *runs, with their roles;
+ * false when it takes more (then value by value is cheaper). */
+static bool split_into_runs(const ak_instance *instance, const fmi2ValueReference vr[], size_t nvr,
+                            ak_get_runs *runs) {
+    runs->n_runs = 0;
+    runs->roles = 0;
+    for (size_t i = 0; i < nvr; i += runs->lengths[runs->n_runs++]) {
+        if (runs->n_runs == AK_MAX_RUNS) {
+            return false;
         }
-        lengths[runs] = run_length(&vr[i], nvr - i);
+        const size_t n = run_length(&vr[i], nvr - i);
+        runs->lengths[runs->n_runs] = n;
+        runs->roles |= vr[i] < AK_MAX_VARIABLES ? ak_real_roles_of_run(instance, vr[i], n)
+                                                : 1u << AK_REAL_ABSENT;
     }
-    return runs;
+    return true;
+}
+
+/* The runs of a get that is not one run: the instance's last ones when it asks the same again;
+ * else found in *scratch, and kept unless the call is to be refused (a refused call changes
+ * nothing). NULL when they are too many. */
+static const ak_get_runs *runs_of(ak_instance *instance, const fmi2ValueReference vr[],
+                                  size_t nvr, ak_get_runs *scratch) {
+    ak_get_runs *last = &instance->last_runs;
+    if (nvr == last->nvr && memcmp(vr, last->vr, nvr * sizeof vr[0]) == 0) {
+        return last;
+    }
+    if (nvr > AK_MAX_VARIABLES || !split_into_runs(instance, vr, nvr, scratch)) {
+        return NULL;
+    }
+    if (scratch->roles & (1u << AK_REAL_ABSENT)) {
+        return scratch;
+    }
+    memcpy(last->vr, vr, nvr * sizeof vr[0]);
+    memcpy(last->lengths, scratch->lengths, scratch->n_runs * sizeof last->lengths[0]);
+    last->n_runs = scratch->n_runs;
+    last->roles = scratch->roles;
+    last->nvr = nvr;
+    return last;
 }
 
 static const char *type_name(ak_type type) {
@@ -145,16 +172,13 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
      * their values from one copy. */
     const bool run = ak_consecutive(vr, nvr);
     /* Else a few runs (fmpy's record of every output), each read like one. */
-    size_t lengths[AK_MAX_RUNS];
-    const size_t runs = run ? 0 : split_into_runs(vr, nvr, lengths);
+    ak_get_runs scratch;
+    const ak_get_runs *runs = run || nvr == 0 ? NULL : runs_of(instance, vr, nvr, &scratch);
     unsigned int roles = 0;
     if (run) {
         roles = ak_real_roles_of_run(instance, vr[0], nvr);
-    } else if (runs > 0) {
-        for (size_t r = 0, i = 0; r < runs; i += lengths[r++]) {
-            roles |= vr[i] < AK_MAX_VARIABLES ? ak_real_roles_of_run(instance, vr[i], lengths[r])
-                                              : 1u << AK_REAL_ABSENT;
-        }
+    } else if (runs != NULL) {
+        roles = runs->roles;
     } else {
         for (size_t i = 0; i < nvr; i++) {
             roles |= 1u << ak_real_role_of(instance, vr[i]);
@@ -178,9 +202,9 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
     }
     if (run) {
         memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
-    } else if (runs > 0) {
-        for (size_t r = 0, i = 0; r < runs; i += lengths[r++]) {
-            memcpy(&value[i], &instance->data.values[vr[i]], lengths[r] * sizeof value[0]);
+    } else if (runs != NULL) {
+        for (size_t r = 0, i = 0; r < runs->n_runs; i += runs->lengths[r++]) {
+            memcpy(&value[i], &instance->data.values[vr[i]], runs->lengths[r] * sizeof value[0]);
         }
     } else {
         for (size_t i = 0; i < nvr; i++) {
