@@ -58,36 +58,38 @@ static size_t run_length(const fmi2ValueReference vr[], size_t nvr) {
 }
 
 /* vr as at most AK_MAX_RUNS runs of consecutive value references into *runs, with their roles;
- * false when it takes more (then value by value is cheaper). */
-static bool split_into_runs(const ak_instance *instance, const fmi2ValueReference vr[], size_t nvr,
+ * when it takes more, no runs (n_runs 0: value by value is cheaper) and the roles one by one. */
+static void split_into_runs(const ak_instance *instance, const fmi2ValueReference vr[], size_t nvr,
                             ak_get_runs *runs) {
     runs->n_runs = 0;
     runs->roles = 0;
     for (size_t i = 0; i < nvr; i += runs->lengths[runs->n_runs++]) {
         if (runs->n_runs == AK_MAX_RUNS) {
-            return false;
+            runs->n_runs = 0;
+            runs->roles = 0;
+            for (size_t k = 0; k < nvr; k++) {
+                runs->roles |= 1u << ak_real_role_of(instance, vr[k]);
+            }
+            return;
         }
         const size_t n = run_length(&vr[i], nvr - i);
         runs->lengths[runs->n_runs] = n;
         runs->roles |= vr[i] < AK_MAX_VARIABLES ? ak_real_roles_of_run(instance, vr[i], n)
                                                 : 1u << AK_REAL_ABSENT;
     }
-    return true;
 }
 
-/* The runs of a get that is not one run: the instance's last ones when it asks the same again;
- * else found in *scratch, and kept unless the call is to be refused (a refused call changes
- * nothing). NULL when they are too many. */
+/* The runs of a get that is not one run (nvr > 0): the instance's last ones when it asks the same
+ * again (masters ask the same at every step); else found in *scratch, and kept unless the call is
+ * to be refused (a refused call changes nothing). */
 static const ak_get_runs *runs_of(ak_instance *instance, const fmi2ValueReference vr[],
                                   size_t nvr, ak_get_runs *scratch) {
     ak_get_runs *last = &instance->last_runs;
     if (nvr == last->nvr && memcmp(vr, last->vr, nvr * sizeof vr[0]) == 0) {
         return last;
     }
-    if (nvr > AK_MAX_VARIABLES || !split_into_runs(instance, vr, nvr, scratch)) {
-        return NULL;
-    }
-    if (scratch->roles & (1u << AK_REAL_ABSENT)) {
+    split_into_runs(instance, vr, nvr, scratch);
+    if (nvr > AK_MAX_VARIABLES || (scratch->roles & (1u << AK_REAL_ABSENT)) != 0) {
         return scratch;
     }
     memcpy(last->vr, vr, nvr * sizeof vr[0]);
@@ -174,16 +176,9 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
     /* Else a few runs (fmpy's record of every output), each read like one. */
     ak_get_runs scratch;
     const ak_get_runs *runs = run || nvr == 0 ? NULL : runs_of(instance, vr, nvr, &scratch);
-    unsigned int roles = 0;
-    if (run) {
-        roles = ak_real_roles_of_run(instance, vr[0], nvr);
-    } else if (runs != NULL) {
-        roles = runs->roles;
-    } else {
-        for (size_t i = 0; i < nvr; i++) {
-            roles |= 1u << ak_real_role_of(instance, vr[i]);
-        }
-    }
+    const unsigned int roles = run ? ak_real_roles_of_run(instance, vr[0], nvr)
+                               : runs != NULL ? runs->roles
+                                              : 0u;
     if (roles & (1u << AK_REAL_ABSENT)) { /* the first such value reference, and why */
         size_t i = 0;
         while (ak_real_role_of(instance, vr[i]) != AK_REAL_ABSENT) {
@@ -202,7 +197,7 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
     }
     if (run) {
         memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
-    } else if (runs != NULL) {
+    } else if (runs != NULL && runs->n_runs > 0) {
         for (size_t r = 0, i = 0; r < runs->n_runs; i += runs->lengths[r++]) {
             memcpy(&value[i], &instance->data.values[vr[i]], runs->lengths[r] * sizeof value[0]);
         }
