@@ -196,7 +196,8 @@ bool ak_model_any_derived(const unsigned int vr[], size_t n);
 
 /* What the FMI layers call for AK_MODEL.jacobian and AK_MODEL.output_derivatives (same
  * contract; models/model_derived.c): the model's own for its outputs, the chain rule through
- * AK_MODEL.derived's tangents for a derived one. Call only when the model's function is not NULL. */
+ * AK_MODEL.derived's tangents for a derived one. Call only when the model's function is not NULL;
+ * at most AK_MAX_VARIABLES unknowns per ak_model_jacobian call (the rows of J). */
 void ak_model_jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,
                        double J[][AK_MAX_KNOWNS]);
 void ak_model_output_derivatives(ak_model_data *data, const unsigned int vr[], size_t nvr,

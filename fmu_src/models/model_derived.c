@@ -28,6 +28,19 @@ bool ak_model_any_derived(const unsigned int vr[], size_t n) {
     return false;
 }
 
+/* The positions in vr[] of the outputs that are not derived, and how many: the model computes
+ * theirs in one call. */
+static size_t not_derived(const unsigned int vr[], size_t n, unsigned int own[], size_t at[]) {
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!is_derived(vr[i])) {
+            own[m] = vr[i];
+            at[m++] = i;
+        }
+    }
+    return m;
+}
+
 void ak_model_jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,
                        double J[][AK_MAX_KNOWNS]) {
     if (!ak_model_any_derived(out, n_out)) {
@@ -35,10 +48,19 @@ void ak_model_jacobian(const ak_model_data *data, const unsigned int out[], size
         return;
     }
     const ak_derived_outputs *derived = AK_MODEL.derived;
-    double rows[AK_MAX_VARIABLES][AK_MAX_KNOWNS];
-    AK_MODEL.jacobian(data, derived->arguments, derived->n_arguments, rows);
-    /* tangents[k][vr]: the change of value vr along known k. */
     const size_t n_knowns = (size_t)(AK_MODEL.n_inputs + AK_MODEL.n_states);
+    double rows[AK_MAX_VARIABLES][AK_MAX_KNOWNS];
+    /* The model's own rows first (n_out <= AK_MAX_VARIABLES, as for the model's jacobian). */
+    unsigned int own[AK_MAX_VARIABLES];
+    size_t at[AK_MAX_VARIABLES];
+    const size_t n_own = not_derived(out, n_out, own, at);
+    AK_MODEL.jacobian(data, own, n_own, rows);
+    for (size_t m = 0; m < n_own; m++) {
+        memcpy(J[at[m]], rows[m], n_knowns * sizeof rows[m][0]);
+    }
+    /* Then the arguments' rows, carried through the tangents known by known:
+     * tangents[k][vr] is the change of value vr along known k. */
+    AK_MODEL.jacobian(data, derived->arguments, derived->n_arguments, rows);
     double tangents[AK_MAX_KNOWNS][AK_MAX_VARIABLES];
     for (size_t k = 0; k < n_knowns; k++) {
         memset(tangents[k], 0, sizeof tangents[k]);
@@ -48,12 +70,35 @@ void ak_model_jacobian(const ak_model_data *data, const unsigned int out[], size
         derived->tangents(data->values, tangents[k]);
     }
     for (size_t i = 0; i < n_out; i++) {
-        if (!is_derived(out[i])) {
-            AK_MODEL.jacobian(data, &out[i], 1, &J[i]);
-            continue;
+        if (is_derived(out[i])) {
+            for (size_t k = 0; k < n_knowns; k++) {
+                J[i][k] = tangents[k][out[i]];
+            }
         }
-        for (size_t k = 0; k < n_knowns; k++) {
-            J[i][k] = tangents[k][out[i]];
+    }
+}
+
+/* At most AK_MAX_VARIABLES value references (ak_model_output_derivatives cuts longer calls). */
+static void output_derivatives_of_some(ak_model_data *data, const unsigned int vr[], size_t nvr,
+                                       double value[]) {
+    const ak_derived_outputs *derived = AK_MODEL.derived;
+    double of[AK_MAX_VARIABLES];
+    unsigned int own[AK_MAX_VARIABLES];
+    size_t at[AK_MAX_VARIABLES];
+    const size_t n_own = not_derived(vr, nvr, own, at);
+    AK_MODEL.output_derivatives(data, own, n_own, of);
+    for (size_t m = 0; m < n_own; m++) {
+        value[at[m]] = of[m];
+    }
+    AK_MODEL.output_derivatives(data, derived->arguments, derived->n_arguments, of);
+    double tangents[AK_MAX_VARIABLES] = {0};
+    for (size_t a = 0; a < derived->n_arguments; a++) {
+        tangents[derived->arguments[a]] = of[a];
+    }
+    derived->tangents(data->values, tangents);
+    for (size_t i = 0; i < nvr; i++) {
+        if (is_derived(vr[i])) {
+            value[i] = tangents[vr[i]];
         }
     }
 }
@@ -64,19 +109,8 @@ void ak_model_output_derivatives(ak_model_data *data, const unsigned int vr[], s
         AK_MODEL.output_derivatives(data, vr, nvr, value);
         return;
     }
-    const ak_derived_outputs *derived = AK_MODEL.derived;
-    double of_arguments[AK_MAX_VARIABLES];
-    AK_MODEL.output_derivatives(data, derived->arguments, derived->n_arguments, of_arguments);
-    double tangents[AK_MAX_VARIABLES] = {0};
-    for (size_t a = 0; a < derived->n_arguments; a++) {
-        tangents[derived->arguments[a]] = of_arguments[a];
-    }
-    derived->tangents(data->values, tangents);
-    for (size_t i = 0; i < nvr; i++) {
-        if (is_derived(vr[i])) {
-            value[i] = tangents[vr[i]];
-        } else {
-            AK_MODEL.output_derivatives(data, &vr[i], 1, &value[i]);
-        }
+    for (size_t first = 0; first < nvr; first += AK_MAX_VARIABLES) {
+        const size_t n = nvr - first < AK_MAX_VARIABLES ? nvr - first : AK_MAX_VARIABLES;
+        output_derivatives_of_some(data, &vr[first], n, &value[first]);
     }
 }
