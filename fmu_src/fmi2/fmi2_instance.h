@@ -85,14 +85,17 @@ static inline ak_real_role ak_real_role_of(const ak_instance *instance, unsigned
     return vr < AK_MAX_VARIABLES ? (ak_real_role)instance->real_role[vr] : AK_REAL_ABSENT;
 }
 
-/* The roles of the value references first .. first + n - 1 (first + n <= AK_MAX_VARIABLES), one
- * bit (1 << role) per role present. */
+/* Of the value references first .. first + n - 1 (first + n <= AK_MAX_VARIABLES), the roles that
+ * decide what a get does (absent: refused; an output group: brought up to date), one bit
+ * (1 << role) per role present; inputs and parameters, which need nothing, are not looked at. */
 static inline unsigned int ak_real_roles_of_run(const ak_instance *instance, unsigned int first,
                                                 size_t n) {
+    static const ak_real_role DECIDING[] = {AK_REAL_ABSENT, AK_REAL_MAIN_OUTPUT,
+                                            AK_REAL_LAZY_OUTPUT, AK_REAL_DERIVED_OUTPUT};
     unsigned int roles = 0;
-    for (int role = 0; role < AK_N_REAL_ROLES; role++) {
-        const unsigned char *before = instance->roles_before[role];
-        roles |= (unsigned int)(before[first + n] != before[first]) << role;
+    for (size_t k = 0; k < sizeof DECIDING / sizeof DECIDING[0]; k++) {
+        const unsigned char *before = instance->roles_before[DECIDING[k]];
+        roles |= (unsigned int)(before[first + n] != before[first]) << DECIDING[k];
     }
     return roles;
 }
