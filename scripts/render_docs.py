@@ -173,7 +173,8 @@ def render_variables(models):
         "## Variables of AngularKinematics",
         "",
         "The lazy outputs (`R`, `q`, `W_*`) are computed only when one of them is read after an input",
-        "changed, so a master that reads only omega and alpha pays nothing for them.",
+        "changed, so a master that reads only omega and alpha pays nothing for them; `rotation_angle`,",
+        "computed from `q` by a core function (`computed_by` in the description), only when it is read.",
         "",
         markdown_table(*variable_rows(ak)),
         ""]
