@@ -128,8 +128,7 @@ def derived_c(model):
              f" * {HEADER_NOTE.format(source=f'models/{model.name}/description.py')} */",
              f'#include "{model.name}_variables.h"', ""]
     if not entries:
-        lines += [f"const ak_derived_outputs {p}_DERIVED_OUTPUTS = {{0, NULL, 0, NULL, NULL, NULL}};",
-                  ""]
+        lines += [f"const ak_derived_outputs {p}_DERIVED_OUTPUTS = {{0, NULL, NULL, NULL}};", ""]
         return "\n".join(lines)
     tangents = gives_derivatives(model)
     functions = [e["computed_by"][0] for e in entries]
@@ -155,14 +154,12 @@ def derived_c(model):
         lines += ["static void tangents(const double v[], double dv[]) {"]
         lines += [call(e, "_tangent", True)[4:] for e in entries]
         lines += ["}", ""]
-    derived = [s for s in model.scalars if s.computed_by]
-    arguments = sorted({t.vr for s in derived for t in model.scalars
-                        if t.base in s.computed_by[1:] and not t.computed_by})
-    lines += [f"static const unsigned int OUTPUTS[] = {{{', '.join(str(s.vr) for s in derived)}}};",
-              f"static const unsigned int ARGUMENTS[] = {{{', '.join(str(vr) for vr in arguments)}}};",
+    arguments = sorted({t.vr for s in model.scalars if s.computed_by
+                        for t in model.arguments_of(s) if not t.computed_by})
+    lines += [f"static const unsigned int ARGUMENTS[] = {{{', '.join(str(vr) for vr in arguments)}}};",
               "",
-              f"const ak_derived_outputs {p}_DERIVED_OUTPUTS = {{{len(derived)}, OUTPUTS, "
-              f"{len(arguments)}, ARGUMENTS, compute, {'tangents' if tangents else 'NULL'}}};", ""]
+              f"const ak_derived_outputs {p}_DERIVED_OUTPUTS = {{{len(arguments)}, ARGUMENTS, "
+              f"compute, {'tangents' if tangents else 'NULL'}}};", ""]
     return "\n".join(lines)
 
 

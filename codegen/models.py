@@ -72,6 +72,10 @@ class Model:
         """The inputs among a scalar's dependencies (the C table lists only those)."""
         return [vr for vr in scalar.depends if self.scalars_by_vr[vr].causality == "input"]
 
+    def arguments_of(self, scalar):
+        """The scalars a derived output (`computed_by`) is computed from."""
+        return _arguments_of(scalar, self.scalars)
+
     @property
     def scalars_by_vr(self):
         return {s.vr: s for s in self.scalars}
@@ -140,8 +144,7 @@ def load(name):
     for s in sorted(scalars, key=lambda s: s.vr):
         if s.computed_by and "depends" not in _entry(d, s.base):
             # A derived output depends on what its arguments depend on (their vrs are lower).
-            s.depends = sorted({vr for t in scalars if t.base in s.computed_by[1:]
-                                for vr in t.depends})
+            s.depends = sorted({vr for t in _arguments_of(s, scalars) for vr in t.depends})
             continue
         wanted = s.depends(*s.indices) if callable(s.depends) else s.depends
         s.depends = resolve(wanted)
@@ -169,6 +172,10 @@ def _group(entry):
     return entry.get("group", "main")
 
 
+def _arguments_of(scalar, scalars):
+    return [t for t in scalars if t.base in scalar.computed_by[1:]]
+
+
 def _entry(description, base):
     return next(e for e in description.VARIABLES if e["name"] == base)
 
@@ -181,12 +188,12 @@ def _check_derived(name, scalars):
             continue
         assert s.causality == "output", f"{name}: {s.name} is computed_by a core function: an output"
         for argument in s.computed_by[1:]:
-            found = [t for t in scalars if t.base == argument]
-            assert found, f"{name}: {s.name}: no variable {argument} to compute it from"
-            for t in found:
-                assert t.causality == "output" and t.vr < s.vr, (
-                    f"{name}: {s.name} is computed from {t.name}: an output with a lower value "
-                    "reference")
+            assert any(t.base == argument for t in scalars), (
+                f"{name}: {s.name}: no variable {argument} to compute it from")
+        for t in _arguments_of(s, scalars):
+            assert t.causality == "output" and t.vr < s.vr, (
+                f"{name}: {s.name} is computed from {t.name}: an output with a lower value "
+                "reference")
 
 
 def _check(name, scalars):

@@ -114,9 +114,7 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance c, const fmi3ValueReference vr[
     /* An output computed from others (models/model_derived.c) needs their values, lazy ones too. */
     bool derived = false;
     for (size_t i = 0; i < nvr; i++) {
-        unsigned int elements[AK_MAX_VARIABLES];
-        derived = derived || ak_model_any_derived(elements, expand(&vr[i], 1, elements,
-                                                                   AK_MAX_VARIABLES));
+        derived = derived || AK_MODEL.variables[vr[i]].group == AK_GROUP_DERIVED;
     }
     const fmi3Status status = ak3_read_status(derived ? ak3_instance_update_all_outputs(instance)
                                                       : ak3_instance_update_outputs(instance));

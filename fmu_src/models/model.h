@@ -86,13 +86,12 @@ typedef struct {
  * layers reach them only through ak_outputs_update, ak_model_jacobian and
  * ak_model_output_derivatives. */
 typedef struct {
-    size_t n_outputs;
-    const unsigned int *outputs; /* their value references, element by element */
     /* The value references of the outputs they are computed from that are not derived
      * themselves: the rows the model's Jacobian gives for the derived ones' chain rule. */
     size_t n_arguments;
     const unsigned int *arguments;
-    /* Writes the derived outputs into values, from the other outputs (both groups current). */
+    /* Writes the derived outputs into values, from the other outputs (both groups current);
+     * NULL when the model has none. */
     void (*compute)(double values[]);
     /* The derived outputs' changes, tangents[vr], from the arguments' changes tangents[vr] in
      * one direction (forward mode: each core function's `_tangent` twin); NULL when the model
@@ -135,7 +134,8 @@ typedef struct {
     void (*output_derivatives)(ak_model_data *data, const unsigned int vr[], size_t nvr,
                                double value[]);
     bool can_interpolate_inputs;
-    /* The outputs computed from others by core functions (generated; n_outputs 0 when none). */
+    /* The outputs computed from others by core functions (generated; compute NULL when none);
+     * which they are is the variable table's group AK_GROUP_DERIVED. */
     const ak_derived_outputs *derived;
     /* True for a model whose evaluation can fail, or whose outputs depend on the path (the
      * unwrapped angles of AttitudePropagator): fmi2DoStep and fmi3DoStep then evaluate at the
@@ -185,7 +185,7 @@ bool ak_log_categories_set(const ak_model_data *data, const char *function,
 
 /* The derived outputs (AK_MODEL.derived), once both groups are current. */
 static inline void ak_model_compute_derived(ak_model_data *data) {
-    if (AK_MODEL.derived != NULL && AK_MODEL.derived->n_outputs > 0) {
+    if (AK_MODEL.derived != NULL && AK_MODEL.derived->compute != NULL) {
         AK_MODEL.derived->compute(data->values);
     }
 }

@@ -6,20 +6,12 @@
 
 #include "model.h"
 
+/* vr: a checked value reference of an output or a state derivative. */
 static bool is_derived(unsigned int vr) {
-    const ak_derived_outputs *derived = AK_MODEL.derived;
-    for (size_t i = 0; i < derived->n_outputs; i++) {
-        if (derived->outputs[i] == vr) {
-            return true;
-        }
-    }
-    return false;
+    return AK_MODEL.variables[vr].group == AK_GROUP_DERIVED;
 }
 
 bool ak_model_any_derived(const unsigned int vr[], size_t n) {
-    if (AK_MODEL.derived == NULL || AK_MODEL.derived->n_outputs == 0) {
-        return false;
-    }
     for (size_t i = 0; i < n; i++) {
         if (is_derived(vr[i])) {
             return true;

@@ -8,32 +8,25 @@ import ctypes
 import numpy as np
 
 from codegen.models import load
+from fmi3_support import doubles, vrs
 
 DERIVED = [s.name for s in load("AngularKinematics").scalars if s.computed_by]
 INPUTS = dict(zip([f"{b}[{i}]" for b in ("theta", "theta_dot", "theta_ddot") for i in (1, 2, 3)],
                   [0.3, -1.1, 2.0, 0.7, -0.4, 1.9, 3.0, -2.5, 0.25]))
 
 
-def uints(values):
-    return (ctypes.c_uint * len(values))(*values)
-
-
-def doubles(values):
-    return (ctypes.c_double * len(values))(*values)
-
-
-def output_derivatives(instance, vrs):
-    got = (ctypes.c_double * len(vrs))()
-    status = instance.call("fmi2GetRealOutputDerivatives", uints(vrs), len(vrs),
-                           (ctypes.c_int * len(vrs))(*[1] * len(vrs)), got)
+def output_derivatives(instance, requested):
+    got = (ctypes.c_double * len(requested))()
+    status = instance.call("fmi2GetRealOutputDerivatives", vrs(requested), len(requested),
+                           (ctypes.c_int * len(requested))(*[1] * len(requested)), got)
     assert status == 0
     return np.array(got)
 
 
 def directional(instance, unknowns, seed):
     got = (ctypes.c_double * len(unknowns))()
-    status = instance.call("fmi2GetDirectionalDerivative", uints(unknowns), len(unknowns),
-                           uints(range(9)), 9, doubles(seed), got)
+    status = instance.call("fmi2GetDirectionalDerivative", vrs(unknowns), len(unknowns),
+                           vrs(range(9)), 9, doubles(seed), got)
     assert status == 0
     return np.array(got)
 

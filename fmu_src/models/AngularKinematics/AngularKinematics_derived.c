@@ -12,7 +12,6 @@ static void tangents(const double v[], double dv[]) {
     ak_rotation_angle_tangent(&v[AK_VR_Q], &dv[AK_VR_Q], &dv[AK_VR_ROTATION_ANGLE]);
 }
 
-static const unsigned int OUTPUTS[] = {71};
 static const unsigned int ARGUMENTS[] = {30, 31, 32, 33};
 
-const ak_derived_outputs AK_DERIVED_OUTPUTS = {1, OUTPUTS, 4, ARGUMENTS, compute, tangents};
+const ak_derived_outputs AK_DERIVED_OUTPUTS = {4, ARGUMENTS, compute, tangents};
