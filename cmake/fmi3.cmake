@@ -74,6 +74,8 @@ function(ak_add_fmu3 model)
          COMMAND ${CMAKE_COMMAND} -E make_directory "${_package}/binaries/${_platform}"
          COMMAND ${CMAKE_COMMAND} -E copy "${_binary}" "${_package}/binaries/${_platform}/")
   endforeach()
+  list(TRANSFORM AK_DOCUMENTATION_FIGURES_${model} PREPEND "${CMAKE_SOURCE_DIR}/"
+       OUTPUT_VARIABLE _figures)
   set(_fmu "${AK_DIST_DIR}/fmi3/${model}.fmu")
   add_custom_command(
     OUTPUT "${_fmu}"
@@ -81,7 +83,7 @@ function(ak_add_fmu3 model)
     COMMAND ${CMAKE_COMMAND} -E make_directory "${_package}/binaries/${FMI3_PLATFORM}"
             "${_package}/sources" "${_package}/documentation" "${_package}/terminalsAndIcons"
     COMMAND ${CMAKE_COMMAND} -E copy "${_folder}/modelDescription.xml" "${_package}/"
-    COMMAND ${CMAKE_COMMAND} -E copy "${_folder}/documentation/index.html"
+    COMMAND ${CMAKE_COMMAND} -E copy "${_folder}/documentation/index.html" ${_figures}
             "${_package}/documentation/"
     COMMAND ${CMAKE_COMMAND} -E copy "${CMAKE_SOURCE_DIR}/model.png"
             "${_package}/terminalsAndIcons/icon.png"
@@ -96,16 +98,19 @@ function(ak_add_fmu3 model)
             modelDescription.xml binaries documentation sources terminalsAndIcons
     WORKING_DIRECTORY "${CMAKE_BINARY_DIR}"
     DEPENDS ${_target} "${_folder}/modelDescription.xml" "${_folder}/buildDescription.xml"
-            "${_folder}/documentation/index.html" "${CMAKE_SOURCE_DIR}/model.png" ${_packaged}
+            "${_folder}/documentation/index.html" ${_figures} "${CMAKE_SOURCE_DIR}/model.png" ${_packaged}
             ${_extra}
     COMMENT "Packaging ${_fmu}"
     VERBATIM)
   add_custom_target(fmu3_${model} ALL DEPENDS "${_fmu}")
 endfunction()
 
-foreach(_model IN LISTS AK_FMI3_MODELS)
+foreach(_model IN LISTS AK_MODELS)
   ak_add_fmu3(${_model})
 endforeach()
+# Every model's FMI 3 binary, for the builds that only make another platform's (scripts/build.sh).
+list(TRANSFORM AK_MODELS APPEND _fmi3 OUTPUT_VARIABLE _fmi3_targets)
+add_custom_target(fmi3_binaries DEPENDS ${_fmi3_targets})
 
 # Our FMI 3 master: runs a fixed scenario through one FMI 3 binary and prints every output in
 # hex, so that the binaries of x86_64-linux, aarch64-linux (under qemu) and x86_64-windows (under

@@ -62,7 +62,7 @@ set(AK_FMI3_HEADERS
   fmu_src/models/model_outputs.h
   fmu_src/models/model_state_image.h
   fmu_src/models/log_categories.h)
-set(AK_FMI3_MODELS AngularKinematics EulerRates AttitudePropagator)
+set(AK_FMI3_MODELS ${AK_MODELS})  # the same list under its former name
 set(AK_FMI3_ARRAYS_AngularKinematics
   fmu_src/models/AngularKinematics/fmi3/AngularKinematics_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_AngularKinematics
@@ -71,7 +71,7 @@ set(AK_MODEL_SOURCES_AngularKinematics
   fmu_src/models/AngularKinematics/AngularKinematics_derived.c)
 set(AK_MODEL_HEADERS_AngularKinematics
   fmu_src/models/AngularKinematics/AngularKinematics_variables.h)
-set(AK_MODEL_DESCRIPTION_AngularKinematics "modelDescription.xml")
+set(AK_DOCUMENTATION_FIGURES_AngularKinematics documentation/tumbling_body.png documentation/models.svg)
 set(AK_FMI3_ARRAYS_EulerRates
   fmu_src/models/EulerRates/fmi3/EulerRates_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_EulerRates
@@ -80,7 +80,7 @@ set(AK_MODEL_SOURCES_EulerRates
   fmu_src/models/EulerRates/EulerRates_derived.c)
 set(AK_MODEL_HEADERS_EulerRates
   fmu_src/models/EulerRates/EulerRates_variables.h)
-set(AK_MODEL_DESCRIPTION_EulerRates "fmu_src/models/EulerRates/modelDescription.xml")
+set(AK_DOCUMENTATION_FIGURES_EulerRates documentation/models.svg)
 set(AK_FMI3_ARRAYS_AttitudePropagator
   fmu_src/models/AttitudePropagator/fmi3/AttitudePropagator_fmi3_arrays.c)
 set(AK_MODEL_SOURCES_AttitudePropagator
@@ -89,4 +89,4 @@ set(AK_MODEL_SOURCES_AttitudePropagator
   fmu_src/models/AttitudePropagator/AttitudePropagator_derived.c)
 set(AK_MODEL_HEADERS_AttitudePropagator
   fmu_src/models/AttitudePropagator/AttitudePropagator_variables.h)
-set(AK_MODEL_DESCRIPTION_AttitudePropagator "fmu_src/models/AttitudePropagator/modelDescription.xml")
+set(AK_DOCUMENTATION_FIGURES_AttitudePropagator )

@@ -6,7 +6,6 @@ array is shared: an array occupies values[vr .. vr + n - 1], row-major).
     fmu_src/models/<Model>/fmi3/modelDescription.xml     FMI 3.0
     fmu_src/models/<Model>/fmi3/buildDescription.xml     sources/ of the FMI 3 FMU
     fmu_src/models/<Model>/fmi3/<Model>_fmi3_arrays.c    the array table of the FMI 3 layer
-    fmu_src/models/<Model>/fmi3/documentation/index.html the FMU's documentation
     docs/fmi3_variables.md                               FMI 2 scalars -> FMI 3 arrays"""
 import math
 
@@ -267,32 +266,6 @@ def model_description(model):
                        f'dependenciesKind="{kinds}"/>  <!-- {entry["name"]} -->')
     out += ["  </ModelStructure>", "", "</fmiModelDescription>", ""]
     return "\n".join(out)
-
-
-def documentation(model):
-    rows = []
-    for entry in model.arrays:
-        shape = "x".join(str(n) for n in entry.get("shape", ())) or "scalar"
-        unit = project.TYPES.get(entry["type"], (None, "", None))[1] or entry["type"]
-        rows.append(f"<tr><td>{entry['name']}</td><td>{entry['vr']}</td><td>{shape}</td>"
-                    f"<td>{entry['causality']}</td><td>{xml_escape(unit or '-')}</td></tr>")
-    table = "\n".join(rows)
-    return f'''<!DOCTYPE html>
-<!-- {HEADER_NOTE.format(source=f"models/{model.name}/description.py")} -->
-<html lang="en"><head><meta charset="utf-8"><title>{model.name} (FMI 3.0)</title></head>
-<body>
-<h1>{model.name} {project.VERSION} (FMI 3.0)</h1>
-<p>{xml_escape(model.description)}.</p>
-<p>Co-Simulation and Model Exchange in one FMU. The variables are arrays: a matrix is stored
-row-major; a value reference is that of the array. Enumeration parameters are set with
-fmi3SetInt64 before fmi3ExitInitializationMode.</p>
-<table border="1">
-<tr><th>variable</th><th>value reference</th><th>dimensions</th><th>causality</th><th>unit or type</th></tr>
-{table}
-</table>
-<p>The independent variable time has value reference {TIME_VR}.</p>
-</body></html>
-'''
 
 
 def mapping_markdown(models):

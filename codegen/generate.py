@@ -1,5 +1,5 @@
-"""Writes every file that repeats a fact of codegen/project.py or of a model description
-(fmu_src/models/<Model>/description.py):
+"""The files that repeat a fact of codegen/project.py or of a model description
+(fmu_src/models/<Model>/description.py), for `python -m codegen` (codegen/__main__.py):
 
     fmu_src/core/sequences.c                       the 24 sequences as C data
     fmu_src/models/log_categories.h                the log categories (C enum and names)
@@ -7,20 +7,16 @@
     fmu_src/models/<Model>/<Model>_derived.c       the calls of the core functions that compute
                                                    outputs from outputs (`computed_by`)
     fmu_src/models/<Model>/buildDescription.xml    how to build the source FMU
-    <the model's modelDescription.xml>             FMI 2.0 (the top-level one is AngularKinematics')
+    fmu_src/models/<Model>/modelDescription.xml    FMI 2.0
+    modelDescription.xml                           a copy of project.ROOT_MODEL_DESCRIPTION's
     cmake/generated.cmake                          version, models and source lists for CMake
     fmu_src/models/<Model>/fmi3/...                the FMI 3.0 files (codegen/fmi3.py)
     docs/fmi3_variables.md                         FMI 2 scalars -> FMI 3 arrays
     tools/fmi3_driver_models.c                     what our FMI 3 master drives each model by
 
-    python3 -m codegen.generate            write them
-    python3 -m codegen.generate --check    exit 1 and name the stale files (tests run this)
-
 The generated files are committed (docs/architecture.md says why); nothing here needs more than
 the Python standard library."""
-import argparse
 import re
-import sys
 
 from codegen import fmi3, project
 from codegen.models import ROOT, all_models
@@ -38,7 +34,9 @@ def xml_escape(text):
 
 
 def constant_prefix(model):
+    """The prefix of a model's generated C names: its description's C_PREFIX."""
     return model.c_prefix
+
 
 def c_identifier(name):
     """The C constant of a description name: "theta_dot" -> THETA_DOT, "der(q)" -> DER_Q."""
@@ -348,6 +346,15 @@ def model_description(model):
     return "\n".join(out)
 
 
+def root_copy(model):
+    """The repository root's modelDescription.xml: the model's, said so after the declaration."""
+    declaration, rest = model_description(model).split("\n", 1)
+    source = model.model_description.relative_to(ROOT).as_posix()
+    return (f"{declaration}\n<!-- A generated copy of {source}, kept at the repository root as "
+            "the project's layout promises; edit\n     "
+            f"fmu_src/models/{model.name}/description.py and run python -m codegen. -->\n{rest}")
+
+
 # --- CMake --------------------------------------------------------------------------------------
 
 def cmake_lists(models):
@@ -364,14 +371,13 @@ def cmake_lists(models):
            f"set(AK_FMI2_HEADERS\n{cmake_list(project.FMI2_HEADERS)})",
            f"set(AK_FMI3_SOURCES\n{cmake_list(fmi3.FMI3_SOURCES)})",
            f"set(AK_FMI3_HEADERS\n{cmake_list(fmi3.FMI3_HEADERS)})",
-           f"set(AK_FMI3_MODELS {' '.join(project.FMI3_MODELS)})"]
+           "set(AK_FMI3_MODELS ${AK_MODELS})  # the same list under its former name"]
     for m in models:
-        description = m.model_description.relative_to(ROOT).as_posix()
-        if m.name in project.FMI3_MODELS:
-            out.append(f"set(AK_FMI3_ARRAYS_{m.name}\n  fmu_src/models/{m.name}/fmi3/{m.name}_fmi3_arrays.c)")
-        out += [f"set(AK_MODEL_SOURCES_{m.name}\n{cmake_list(m.sources)})",
+        figures = " ".join(f"documentation/{src}" for src, _, _ in m.figures)
+        out += [f"set(AK_FMI3_ARRAYS_{m.name}\n  fmu_src/models/{m.name}/fmi3/{m.name}_fmi3_arrays.c)",
+                f"set(AK_MODEL_SOURCES_{m.name}\n{cmake_list(m.sources)})",
                 f"set(AK_MODEL_HEADERS_{m.name}\n{cmake_list(m.headers)})",
-                f'set(AK_MODEL_DESCRIPTION_{m.name} "{description}")']
+                f"set(AK_DOCUMENTATION_FIGURES_{m.name} {figures})"]
     return "\n".join(out) + "\n"
 
 
@@ -387,41 +393,12 @@ def outputs():
         files[m.folder / f"{m.name}_derived.c"] = derived_c(m)
         files[m.folder / "buildDescription.xml"] = build_description(m)
         files[m.model_description] = model_description(m)
-        if m.name not in project.FMI3_MODELS:
-            continue
+        if m.name == project.ROOT_MODEL_DESCRIPTION:
+            files[ROOT / "modelDescription.xml"] = root_copy(m)
         folder = m.folder / "fmi3"
         files[folder / "modelDescription.xml"] = fmi3.model_description(m)
         files[folder / "buildDescription.xml"] = fmi3.build_description(m, flat_fmi3_sources(m))
         files[folder / f"{m.name}_fmi3_arrays.c"] = fmi3.arrays_c(m)
-        files[folder / "documentation" / "index.html"] = fmi3.documentation(m)
-    fmi3_models = [m for m in models if m.name in project.FMI3_MODELS]
-    files[ROOT / "tools" / "fmi3_driver_models.c"] = fmi3.driver_models_c(fmi3_models)
-    files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(fmi3_models)
+    files[ROOT / "tools" / "fmi3_driver_models.c"] = fmi3.driver_models_c(models)
+    files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(models)
     return files
-
-
-def stale():
-    return [path for path, text in outputs().items()
-            if not path.exists() or path.read_text() != text]
-
-
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--check", action="store_true",
-                        help="write nothing; exit 1 if a generated file differs from what it "
-                             "would be")
-    args = parser.parse_args()
-    if args.check:
-        paths = stale()
-        for path in paths:
-            print(f"stale: {path.relative_to(ROOT)} (run python3 -m codegen.generate)")
-        sys.exit(1 if paths else 0)
-    for path, text in outputs().items():
-        if not path.exists() or path.read_text() != text:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text(text)
-            print(f"wrote {path.relative_to(ROOT)}")
-
-
-if __name__ == "__main__":
-    main()

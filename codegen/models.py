@@ -37,10 +37,9 @@ class Scalar:
 @dataclass
 class Model:
     name: str
-    c_prefix: str          # of the generated C names
+    c_prefix: str          # of the generated C names (description.py's C_PREFIX, nowhere else)
     guid: str
     description: str
-    model_description: pathlib.Path
     sources: list          # relative to fmu_src/
     headers: list
     capabilities: dict
@@ -48,9 +47,17 @@ class Model:
     arrays: list           # the description's entries, as written
     scalars: list          # expanded, in value-reference order
 
+    documentation: list    # [(docs page, its sections or None for all)]: the FMU's prose
+    figures: list          # [(file of documentation/, alt text, caption)]
+
     @property
     def folder(self):
         return MODELS_DIR / self.name
+
+    @property
+    def model_description(self):
+        """The FMI 2.0 modelDescription.xml, in the model's folder like every other file of it."""
+        return model_description_path(self.name)
 
     def scalar(self, name):
         return next(s for s in self.scalars if s.name == name)
@@ -155,8 +162,8 @@ def load(name):
     _check(name, scalars)
     folder = f"models/{name}"
     return Model(
-        name=d.NAME, c_prefix=getattr(d, "C_PREFIX", d.NAME.upper()), guid=d.GUID, description=d.DESCRIPTION,
-        model_description=ROOT / d.MODEL_DESCRIPTION,
+        name=d.NAME, c_prefix=d.C_PREFIX, guid=d.GUID, description=d.DESCRIPTION,
+        documentation=d.DOCUMENTATION, figures=getattr(d, "FIGURES", []),
         sources=([f"{folder}/{source}" for source in d.SOURCES] +
                  [f"{folder}/{name}_variables.c", f"{folder}/{name}_derived.c"]),
         headers=[f"{folder}/{name}_variables.h"],
@@ -213,6 +220,12 @@ def _check(name, scalars):
         f"{name}: every state needs exactly one derivative and every derivative a state")
     assert all(s.causality in ("output", "local") for s in states + derivatives), (
         f"{name}: states and derivatives are outputs or locals")
+
+
+def model_description_path(name):
+    """fmu_src/models/<name>/modelDescription.xml: the FMI 2.0 model description of every model
+    (the repository root's modelDescription.xml is a generated copy of one, see project.py)."""
+    return MODELS_DIR / name / "modelDescription.xml"
 
 
 def all_models():

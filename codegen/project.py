@@ -1,6 +1,6 @@
 """Facts of the whole project, written once: the version, the log categories, the rotation
 sequences, the declared types and the source files of the core and the FMI layer. Each model adds
-its own description (fmu_src/models/<Model>/description.py); codegen/generate.py writes every file
+its own description (fmu_src/models/<Model>/description.py); `python -m codegen` writes every file
 that repeats these facts (docs/architecture.md lists them)."""
 
 VERSION = "0.3.0"
@@ -80,7 +80,12 @@ FMI2_HEADERS = ["fmi2/fmi2_instance.h", "fmi2/fmi2_logging.h", "fmi2/fmi2_state_
                 "models/model.h",
                 "models/model_outputs.h", "models/model_state_image.h", "models/log_categories.h"]
 
-# The models, each a folder fmu_src/models/<name>/ with description.py.
+# The models, each a folder fmu_src/models/<name>/ with description.py, each built as an FMI 2.0
+# FMU (dist/<name>.fmu) and an FMI 3.0 FMU (dist/fmi3/<name>.fmu). The one list: CMake reads it
+# from cmake/generated.cmake, the scripts and the tests from here (import codegen.project).
 MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator"]
-# The models built as FMI 3.0 FMUs too (dist/fmi3/), from the same descriptions and FMI 3 layer.
-FMI3_MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator"]
+FMI3_MODELS = MODELS  # the same list under its former name, while tests still read it
+
+# The model whose modelDescription.xml the repository root holds a generated copy of (the layout
+# the project promises); its own lives in its folder like every model's.
+ROOT_MODEL_DESCRIPTION = "AngularKinematics"

@@ -3,9 +3,8 @@ union over sequences (and, for EulerRates, over both frames) that a static <Mode
 list. Computed on the independent sympy reference (reference.dependencies); the core is
 checked against the same sets by test_sequences_core.py::test_dependencies_match_reference.
 
-    .venv/bin/python tests/python/sequence_dependencies.py           print them (half a minute)
-    .venv/bin/python tests/python/sequence_dependencies.py --write   and write them into
-                                                                     docs/sequences.md
+    .venv/bin/python tests/python/sequence_dependencies.py   print them (half a minute)
+    .venv/bin/python -m codegen                              writes them into docs/sequences.md
 """
 import argparse
 import pathlib
@@ -60,20 +59,8 @@ def tables():
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--write", action="store_true",
-                        help="replace the tables of docs/sequences.md with these")
-    args = parser.parse_args()
-    text = tables()
-    if not args.write:
-        print(text, end="")
-        return
-    path = pathlib.Path(__file__).resolve().parents[2] / "docs" / "sequences.md"
-    doc = path.read_text()
-    start = doc.index("### AngularKinematics (")
-    end = doc.index("\n## ", start)
-    path.write_text(doc[:start] + text + doc[end:])
-    print(f"wrote the dependency tables of {path}")
+    argparse.ArgumentParser(description=__doc__.split("\n\n")[0]).parse_args()
+    print(tables(), end="")
 
 
 if __name__ == "__main__":

@@ -1,28 +1,28 @@
-"""Every modelDescription.xml (AngularKinematics at the repository root, the others in
-fmu_src/models/<Model>/): valid, packaged as they are, and in agreement with the C variable table
+"""Every modelDescription.xml (fmu_src/models/<Model>/, and the repository root's copy of
+AngularKinematics'): valid, packaged as they are, and in agreement with the C variable table
 each binary is built from and with the dependency unions found on the sympy reference."""
 import math
 import re
 import zipfile
 
 import pytest
+from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
 from conftest import ROOT, c_table_of
 from reference import KINEMATICS_INPUTS, KINEMATICS_OUTPUTS, RATES_INPUTS, RATES_OUTPUTS
 from codegen import project
+from codegen.models import model_description_path
 from codegen.project import SEQUENCES, sequence_description
 
 DISPLAY_UNITS = {"rad": "deg", "rad/s": "deg/s", "rad/s2": "deg/s2"}
 MODELS = {
     "AngularKinematics": dict(
-        xml=ROOT / "modelDescription.xml",
         names=KINEMATICS_INPUTS + KINEMATICS_OUTPUTS[:21] + [f"q[{k}]" for k in (1, 2, 3, 4)]
         + KINEMATICS_OUTPUTS[21:] + ["sequence"],
         parameters={"sequence": ("Integer", "1")},
         union_table="### AngularKinematics", states=0, output_derivative_order=1, directional=True),
     "EulerRates": dict(
-        xml=ROOT / "fmu_src" / "models" / "EulerRates" / "modelDescription.xml",
         names=RATES_INPUTS + RATES_OUTPUTS + ["singularity_distance", "sequence", "frame",
                                               "tolerance"],
         parameters={"sequence": ("Integer", "1"), "frame": ("Integer", "1"),
@@ -30,7 +30,6 @@ MODELS = {
         union_table="### EulerRates (union over sequences and over the frame parameter)",
         states=0, output_derivative_order=0, directional=False),
     "AttitudePropagator": dict(
-        xml=ROOT / "fmu_src" / "models" / "AttitudePropagator" / "modelDescription.xml",
         names=[f"{name}[{k}]" for name in ("omega", "omega_dot") for k in (1, 2, 3)]
         + [f"q[{k}]" for k in (1, 2, 3, 4)] + [f"der(q[{k}])" for k in (1, 2, 3, 4)]
         + [f"R[{i},{j}]" for i in (1, 2, 3) for j in (1, 2, 3)]
@@ -50,6 +49,7 @@ def model(model):
     """conftest's model (every model of codegen.project.MODELS), with its pins from MODELS."""
     assert model.name in MODELS, f"pin {model.name}'s names and parameters in MODELS"
     return dict(MODELS[model.name], name=model.name, fmu=model.fmu_path,
+                xml=model_description_path(model.name),
                 description=model.description, table=model.c_table)
 
 
@@ -78,6 +78,22 @@ def test_fmu_archive_holds_description_binaries_documentation_sources(model, roo
         assert not any(other in n for n in names), f"{name}.fmu ships a file of {other}"
     assert icon == (root / "model.png").read_bytes()
     assert packaged == model["xml"].read_bytes(), "the packaged modelDescription.xml is not the repository's"
+
+
+def test_root_model_description_is_a_marked_copy():
+    """The repository root's modelDescription.xml is project.ROOT_MODEL_DESCRIPTION's, with a
+    comment after the XML declaration saying so; fmpy reads it and its XSD accepts it."""
+    root = ROOT / "modelDescription.xml"
+    original = model_description_path(project.ROOT_MODEL_DESCRIPTION)
+    declaration, rest = original.read_text().split("\n", 1)
+    copied_declaration, comment_and_rest = root.read_text().split("\n", 1)
+    comment, copied_rest = comment_and_rest.split("-->\n", 1)
+    assert copied_declaration == declaration == '<?xml version="1.0" encoding="UTF-8"?>'
+    assert comment.startswith("<!-- A generated copy of " + original.relative_to(ROOT).as_posix())
+    assert copied_rest == rest
+    copy, own = (read_model_description(str(path), validate=True) for path in (root, original))
+    assert copy.guid == own.guid and copy.modelName == own.modelName == project.ROOT_MODEL_DESCRIPTION
+    assert [v.name for v in copy.modelVariables] == [v.name for v in own.modelVariables]
 
 
 def test_identity_agrees_with_c_table(model):

@@ -1,6 +1,7 @@
-"""AngularKinematics: the one description of this model. codegen/generate.py writes from it the
-variable table (AngularKinematics_variables.{h,c}), the top-level modelDescription.xml, the source
-list of CMake and <SourceFiles>, and the variable tables of the docs.
+"""AngularKinematics: the one description of this model. `python -m codegen` writes from it the
+variable table (AngularKinematics_variables.{h,c}), its modelDescription.xml (of which the
+repository root holds a copy), the source list of CMake and <SourceFiles>, the variable tables of
+the docs and the FMU's documentation page.
 
 Value references are written here and never change or get reused: a new variable takes a new
 value reference above every one in use (tests/python/test_value_references.py pins those of 0.2).
@@ -9,13 +10,23 @@ An array of shape (3,) or (3, 3) takes consecutive value references from `vr`, r
 differs per element, a function of the element's indices (1-based) giving element names."""
 
 NAME = "AngularKinematics"
-C_PREFIX = "AK"  # of the generated C names: AK_VR_..., AK_VARIABLES
+C_PREFIX = "AK"  # of the generated C names: AK_VR_..., AK_VARIABLES; set here only (codegen reads it)
 GUID = "{c3391885-ba93-4824-bb36-df39703b63ee}"
 DESCRIPTION = ("Angular velocity and angular acceleration of a rigid body from the angles of any "
                "of the 24 rotation sequences and their first and second time derivatives; "
                "rotation matrix, quaternion and partial angular velocity matrices")
-MODEL_DESCRIPTION = "modelDescription.xml"  # from the repository root: this FMU's is the top one
 SOURCES = ["model.c"]  # this folder's hand-written glue; the generated table is added
+# The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections, and
+# these figures of documentation/.
+DOCUMENTATION = [("docs/models.md", ["What it computes", "Rotation sequences and conventions",
+                                     "FMI behaviour", "Capabilities"])]
+FIGURES = [("tumbling_body.png", "omega and alpha of a tumbling body, fixed and body components",
+            "A tumbling body simulated with fmpy: the angular velocity and the angular acceleration "
+            "in the fixed frame and in the body frame; grey bands: theta[2] within 0.1 rad of "
+            "gimbal lock."),
+           ("models.svg", "AngularKinematics maps angles and their derivatives to omega and alpha, "
+            "EulerRates maps omega and its derivative back to the angle rates",
+            "AngularKinematics, the forward map, and EulerRates, the inverse map.")]
 CAPABILITIES = dict(provides_directional_derivative=True, can_interpolate_inputs=True,
                     max_output_derivative_order=1)
 

@@ -13,8 +13,9 @@ DESCRIPTION = ("Attitude of a rotating rigid body integrated on unit quaternions
                "velocity (body or fixed components), never meeting a singularity; rotation "
                "matrix, angles of any of the 24 rotation sequences, their rates and the angular "
                "velocity and acceleration in both frames as outputs")
-MODEL_DESCRIPTION = "fmu_src/models/AttitudePropagator/modelDescription.xml"
 SOURCES = ["model.c"]
+# The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections.
+DOCUMENTATION = [("docs/attitude_propagator.md", None)]
 CAPABILITIES = dict(provides_directional_derivative=True, can_interpolate_inputs=True,
                     max_output_derivative_order=0)
 ENUMERATIONS = {

@@ -7,8 +7,14 @@ GUID = "{6f0d3c8e-2b1a-4e55-9a53-2f4c1d7e8b90}"
 DESCRIPTION = ("Kinematic differential equations of any of the 24 rotation sequences: the first "
                "and second time derivatives of the angles from the angular velocity and its "
                "derivative (body or fixed components)")
-MODEL_DESCRIPTION = "fmu_src/models/EulerRates/modelDescription.xml"
 SOURCES = ["model.c"]
+# The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections, and
+# these figures of documentation/.
+DOCUMENTATION = [("docs/models.md", ["Rotation sequences and conventions",
+                                     "EulerRates: the inverse map", "FMI behaviour"])]
+FIGURES = [("models.svg", "AngularKinematics maps angles and their derivatives to omega and alpha, "
+            "EulerRates maps omega and its derivative back to the angle rates",
+            "EulerRates, the inverse map of AngularKinematics.")]
 CAPABILITIES = dict(provides_directional_derivative=False, can_interpolate_inputs=True,
                     max_output_derivative_order=0)
 ENUMERATIONS = {

@@ -1,0 +1,90 @@
+"""`python -m codegen`: writes every generated file of the project; `--check` writes nothing,
+names the stale files and exits 1 if there are any (CMake runs it at configure time with --fast,
+tests/python/test_documentation.py without).
+
+    C, XML, CMake (codegen/generate.py)    variable tables, sequences, log categories, the
+                                           modelDescription.xml and buildDescription.xml files
+                                           (FMI 2 and FMI 3) and their copy at the root,
+                                           cmake/generated.cmake, docs/fmi3_variables.md
+    docs (codegen/docs.py)                 docs/variables.md, README.md's table of the FMUs,
+                                           documentation/models.svg
+    pages (codegen/documentation.py)       each FMU's documentation/index.html, FMI 2 and FMI 3
+    state layout (codegen/state_layout.py) docs/capabilities.md's FMU state layout and sizes
+    dependency tables (codegen/sequence_tables.py)   docs/sequences.md, from the sympy reference
+                                           (half a minute; not with --fast)
+    bad-input tables (codegen/bad_input.py) docs/bad_input.md, from the C drivers in build/
+                                           (only when they are built; not with --fast)
+
+The stages run in this order, each reading what the ones before wrote."""
+import argparse
+import sys
+
+from codegen import bad_input, docs, documentation, generate, sequence_tables, state_layout
+from codegen.models import ROOT, all_models
+
+# (name, {path: text} of its files, slow: skipped by --fast)
+STAGES = [
+    ("C, XML, CMake", generate.outputs, False),
+    ("docs", docs.outputs, False),
+    ("pages", lambda: documentation.outputs(all_models()), False),
+    ("state layout", lambda: state_layout.outputs(all_models()), False),
+    ("dependency tables", sequence_tables.outputs, True),
+    ("bad-input tables", bad_input.outputs, True),
+]
+
+
+def stage_outputs(name, files):
+    """The stage's files, or None (with the reason printed) when it cannot run here."""
+    if name == "bad-input tables" and bad_input.missing_drivers():
+        print(f"not regenerated: docs/bad_input.md (no {', '.join(bad_input.missing_drivers())}:"
+              " run bash scripts/build.sh first)")
+        return None
+    return files()
+
+
+def is_stale(path, text):
+    return not path.is_file() or path.read_text() != text
+
+
+def run(check, fast):
+    stale = []
+    for name, files, slow in STAGES:
+        if fast and slow:
+            continue
+        wanted = stage_outputs(name, files)
+        for path, text in (wanted or {}).items():
+            if not is_stale(path, text):
+                continue
+            stale.append(path)
+            if check:
+                print(f"stale: {path.relative_to(ROOT)}")
+            else:
+                path.parent.mkdir(parents=True, exist_ok=True)
+                path.write_text(text)
+                print(f"wrote {path.relative_to(ROOT)}")
+    if check and stale:
+        print("run: python -m codegen")
+    return stale
+
+
+def main():
+    summary, details = __doc__.split("\n\n", 1)
+    parser = argparse.ArgumentParser(prog="python -m codegen", description=" ".join(summary.split()),
+                                     epilog=details,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--check", action="store_true",
+                        help="write nothing; name the stale files, exit 1 if there are any")
+    parser.add_argument("--fast", action="store_true",
+                        help="skip the dependency and bad-input tables (for CMake's configure check)")
+    parser.add_argument("--figures", action="store_true",
+                        help="first redraw model.png and documentation/tumbling_body.png "
+                             "(needs dist/AngularKinematics.fmu)")
+    args = parser.parse_args()
+    if args.figures and not args.check:
+        docs.redraw_figures()
+    stale = run(args.check, args.fast)
+    sys.exit(1 if args.check and stale else 0)
+
+
+if __name__ == "__main__":
+    main()
