@@ -3,6 +3,7 @@ FMU's documentation/index.html (FMI 2 and FMI 3) is its own model's page (its GU
 variables, its figures, no link that leaves the FMU), and the FMU-state sizes and header of
 docs/capabilities.md are what each FMU serializes."""
 import ctypes
+import dataclasses
 import posixpath
 import re
 import struct
@@ -20,9 +21,9 @@ from fmpy.fmi3 import FMU3Slave
 from conftest import project
 from fmi3_support import fmu3_path, unzipped
 from codegen import __main__ as codegen_main
-from codegen import sequence_tables, state_layout
+from codegen import generate, sequence_tables, state_layout
 from codegen.documentation import sections_of
-from codegen.models import ROOT, load
+from codegen.models import ROOT, all_models, load
 
 FMI_VERSIONS = ["2.0", "3.0"]
 
@@ -54,6 +55,22 @@ def test_check_writes_nothing_and_names_the_stale_file(tmp_path, monkeypatch, ca
     assert "stale: stale.txt" in capsys.readouterr().out
     assert codegen_main.run(check=False, fast=True) == [stale]
     assert stale.read_text() == "new" and current.read_text() == "same"
+
+
+def test_a_models_c_prefix_is_set_by_its_description_alone(monkeypatch):
+    """Give every model another C_PREFIX: each generated C name of the model (value references,
+    counts, GUID, tables) takes it, and no generated file keeps a name with the old one."""
+    models = all_models()
+    renamed = [dataclasses.replace(m, c_prefix=f"ZZ{k}") for k, m in enumerate(models)]
+    monkeypatch.setattr(generate, "all_models", lambda: renamed)
+    files = generate.outputs()
+    for old, new in zip(models, renamed):
+        header = files[new.folder / f"{new.name}_variables.h"]
+        for name in ("GUID", "VARIABLES", "DERIVED_OUTPUTS", "N_INPUTS", "N_VALUE_REFERENCES"):
+            assert f"{new.c_prefix}_{name}" in header
+        for text in files.values():
+            assert not re.search(rf"\b{old.c_prefix}_(VR_|VARIABLES|GUID|DERIVED|N_(INPUTS|OUTPUTS|STATES|VALUE))",
+                                 text)
 
 
 # --- each FMU's own page ---------------------------------------------------------------------
