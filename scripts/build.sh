@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Builds dist/<Model>.fmu (FMI 2.0) and dist/fmi3/<Model>.fmu (FMI 3.0) for every model of
-# codegen/project.py (read from cmake/generated.cmake), and the C tests and tools: first the
+# codegen/project.py (scripts/models.sh), and the C tests and tools: first the
 # x86_64-windows DLLs (preset windows, mingw-w64, in build-win64/) and the aarch64-linux FMI 3
 # binaries (preset aarch64, in build-aarch64/), then the x86_64-linux binaries (preset release, in
 # build/), which it packages with the other platforms' binaries, the sources and the documentation.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-models=$(sed -n 's/^set(AK_MODELS \(.*\))$/\1/p' cmake/generated.cmake)
+models=$(bash scripts/models.sh)
 bash scripts/configure.sh windows
 cmake --build build-win64 --parallel 2
 bash scripts/configure.sh aarch64

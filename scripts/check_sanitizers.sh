@@ -43,10 +43,15 @@ run() { # label, command...
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
+models=$(bash scripts/models.sh)
+per_model() { # prefix: prefix<Model> for every model
+  local model
+  for model in $models; do printf '%s%s ' "$1" "$model"; done
+}
 
 programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRates
-  test_fmi2_instances_EulerRates soak_fmi2_EulerRates fmi3_abuse_AngularKinematics
-  fmi3_abuse_EulerRates fmi3_abuse_AttitudePropagator test_fmi2_calls_AttitudePropagator"
+  test_fmi2_instances_EulerRates soak_fmi2_EulerRates $(per_model fmi3_abuse_)
+  test_fmi2_calls_AttitudePropagator"
 echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
 # shellcheck disable=SC2086
 configure_and_build asan $programs test_kinematics test_attitude abuse_attitude
@@ -59,7 +64,7 @@ for suffix in "" _EulerRates; do
   run asan+ubsan "build-asan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run asan+ubsan "build-asan/soak_fmi2$suffix" "$soak" --no-rss-check
 done
-for model in AngularKinematics EulerRates AttitudePropagator; do # the FMI 3 layer (tests/c/fmi3_abuse.c)
+for model in $models; do # the FMI 3 layer (tests/c/fmi3_abuse.c)
   run asan+ubsan "build-asan/fmi3_abuse_$model" calls
   run asan+ubsan "build-asan/fmi3_abuse_$model" instances 1000 4 "$steps"
   run asan+ubsan "build-asan/fmi3_abuse_$model" soak "$soak"
@@ -68,9 +73,8 @@ done
 # The instrumented binaries inside a real master: the whole pytest suite through fmpy.
 # Leak detection is off here only because the Python interpreter itself does not free everything
 # at exit; the FMU's leaks are checked by the C programs above and by valgrind below.
-configure_and_build asan fmu_AngularKinematics fmu_EulerRates fmu_AttitudePropagator \
-  fmu3_AngularKinematics fmu3_EulerRates fmu3_AttitudePropagator \
-  model_info_AngularKinematics model_info_EulerRates model_info_AttitudePropagator
+# shellcheck disable=SC2046
+configure_and_build asan $(per_model fmu_) $(per_model fmu3_) $(per_model model_info_)
 # --quick: the tests of the FMI layer only (calls, bad input, FMU state, model exchange,
 # derivatives, EulerRates); the whole suite takes a minute and a half under ASan. Never
 # tests/python/test_windows_binary.py: it checks the Windows DLL packaged in dist/*.fmu, which the ASan
@@ -95,14 +99,15 @@ AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asa
   | tail -1
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"
+# shellcheck disable=SC2046
 configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates \
-  fmi3_abuse_AngularKinematics fmi3_abuse_EulerRates fmi3_abuse_AttitudePropagator abuse_attitude
+  $(per_model fmi3_abuse_) abuse_attitude
 run tsan build-tsan/abuse_attitude 8 50 "$steps" 1000
 for suffix in "" _EulerRates; do
   run tsan "build-tsan/test_fmi2_instances$suffix" 1000 4 "$steps"
   run tsan "build-tsan/test_fmi2_instances$suffix" 64 8 "$steps"
 done
-for model in AngularKinematics EulerRates AttitudePropagator; do
+for model in $models; do
   run tsan "build-tsan/fmi3_abuse_$model" instances 1000 4 "$steps"
 done
 
@@ -124,7 +129,7 @@ for suffix in "" _EulerRates; do
   memcheck "build/test_fmi2_instances$suffix" 1000 4 "$valgrind_steps"
   memcheck "build/soak_fmi2$suffix" "$valgrind_soak" --no-rss-check
 done
-for model in AngularKinematics EulerRates AttitudePropagator; do
+for model in $models; do
   memcheck "build/fmi3_abuse_$model" calls
   memcheck "build/fmi3_abuse_$model" instances 100 4 "$valgrind_steps"
   memcheck "build/fmi3_abuse_$model" soak "$valgrind_soak"

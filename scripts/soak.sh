@@ -13,6 +13,6 @@ if [ -z "${AK_SET_UP:-}" ]; then
 fi
 build/soak_fmi2 "$steps"
 build/soak_fmi2_EulerRates "$steps"
-build/fmi3_abuse_AngularKinematics soak "$steps"
-build/fmi3_abuse_EulerRates soak "$steps"
-build/fmi3_abuse_AttitudePropagator soak "$steps"
+for model in $(bash scripts/models.sh); do
+  build/fmi3_abuse_"$model" soak "$steps"
+done
