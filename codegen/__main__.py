@@ -1,6 +1,7 @@
 """`python -m codegen`: writes every generated file of the project; `--check` writes nothing,
-names the stale files and exits 1 if there are any (CMake runs it at configure time with --fast,
-tests/python/test_documentation.py without).
+names the stale files and exits 1 if there are any (CMake at configure time and
+tests/python/test_documentation.py run it with --fast; that test checks the dependency tables
+apart, as a slow test, and tests/python/test_bad_input_table.py the bad-input tables).
 
     C, XML, CMake (codegen/generate.py)    variable tables, sequences, log categories, the
                                            modelDescription.xml and buildDescription.xml files
@@ -22,24 +23,15 @@ import sys
 from codegen import bad_input, docs, documentation, generate, sequence_tables, state_layout
 from codegen.models import ROOT, all_models
 
-# (name, {path: text} of its files, slow: skipped by --fast)
+# (name, {path: text} of its files, slow: skipped by --fast, why it cannot run here or None)
 STAGES = [
-    ("C, XML, CMake", generate.outputs, False),
-    ("docs", docs.outputs, False),
-    ("pages", lambda: documentation.outputs(all_models()), False),
-    ("state layout", lambda: state_layout.outputs(all_models()), False),
-    ("dependency tables", sequence_tables.outputs, True),
-    ("bad-input tables", bad_input.outputs, True),
+    ("C, XML, CMake", generate.outputs, False, lambda: None),
+    ("docs", docs.outputs, False, lambda: None),
+    ("pages", lambda: documentation.outputs(all_models()), False, lambda: None),
+    ("state layout", lambda: state_layout.outputs(all_models()), False, lambda: None),
+    ("dependency tables", sequence_tables.outputs, True, lambda: None),
+    ("bad-input tables", bad_input.outputs, True, bad_input.why_not_here),
 ]
-
-
-def stage_outputs(name, files):
-    """The stage's files, or None (with the reason printed) when it cannot run here."""
-    if name == "bad-input tables" and bad_input.missing_drivers():
-        print(f"not regenerated: docs/bad_input.md (no {', '.join(bad_input.missing_drivers())}:"
-              " run bash scripts/build.sh first)")
-        return None
-    return files()
 
 
 def is_stale(path, text):
@@ -48,11 +40,13 @@ def is_stale(path, text):
 
 def run(check, fast):
     stale = []
-    for name, files, slow in STAGES:
+    for name, files, slow, why_not in STAGES:
         if fast and slow:
             continue
-        wanted = stage_outputs(name, files)
-        for path, text in (wanted or {}).items():
+        if why_not():
+            print(f"{name} not regenerated: {why_not()}")
+            continue
+        for path, text in files().items():
             if not is_stale(path, text):
                 continue
             stale.append(path)

@@ -19,8 +19,10 @@ def driver(model):
     return suffixed if suffixed.is_file() or unsuffixed != [model] else BUILD / "test_fmi2_calls"
 
 
-def missing_drivers():
-    return [str(driver(m).relative_to(ROOT)) for m in MODELS if not driver(m).is_file()]
+def why_not_here():
+    """None when every model's driver is built, else what is missing."""
+    missing = [str(driver(m).relative_to(ROOT)) for m in MODELS if not driver(m).is_file()]
+    return f"no {', '.join(missing)} (run bash scripts/build.sh first)" if missing else None
 
 
 def outputs():

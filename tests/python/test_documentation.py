@@ -48,11 +48,13 @@ def test_check_writes_nothing_and_names_the_stale_file(tmp_path, monkeypatch, ca
     stale.write_text("old")
     monkeypatch.setattr(codegen_main, "ROOT", tmp_path)
     monkeypatch.setattr(codegen_main, "STAGES", [
-        ("one", lambda: {current: "same", stale: "new"}, False),
-        ("slow", lambda: {stale: "from the slow stage"}, True)])
+        ("one", lambda: {current: "same", stale: "new"}, False, lambda: None),
+        ("slow", lambda: {stale: "from the slow stage"}, True, lambda: None),
+        ("not here", lambda: {stale: "from a stage that cannot run"}, False, lambda: "no tool")])
     assert codegen_main.run(check=True, fast=True) == [stale]
     assert stale.read_text() == "old"
-    assert "stale: stale.txt" in capsys.readouterr().out
+    printed = capsys.readouterr().out
+    assert "stale: stale.txt" in printed and "not here not regenerated: no tool" in printed
     assert codegen_main.run(check=False, fast=True) == [stale]
     assert stale.read_text() == "new" and current.read_text() == "same"
 
