@@ -12,14 +12,19 @@ set(AK_CORE_HEADERS
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude.h)
 set(AK_MODEL_COMMON_SOURCES
-  fmu_src/models/model_data.c
+  fmu_src/runtime/instance.c
+  fmu_src/runtime/outputs.c
+  fmu_src/runtime/lifecycle.c
+  fmu_src/runtime/values.c
+  fmu_src/runtime/stepping.c
+  fmu_src/runtime/continuous.c
+  fmu_src/runtime/derivatives.c
+  fmu_src/runtime/state_image.c
+  fmu_src/runtime/fmu_states.c
   fmu_src/models/model_log.c
-  fmu_src/models/model_outputs.c
-  fmu_src/models/model_state_image.c
   fmu_src/models/model_derived.c)
 set(AK_FMI2_SOURCES
-  fmu_src/fmi2/fmi2_instance.c
-  fmu_src/fmi2/fmi2_logging.c
+  fmu_src/fmi2/fmi2_layer.c
   fmu_src/fmi2/fmi2_state_machine.c
   fmu_src/fmi2/fmi2_lifecycle.c
   fmu_src/fmi2/fmi2_values.c
@@ -28,19 +33,17 @@ set(AK_FMI2_SOURCES
   fmu_src/fmi2/fmi2_derivatives.c
   fmu_src/fmi2/fmi2_fmu_state.c)
 set(AK_FMI2_HEADERS
-  fmu_src/fmi2/fmi2_instance.h
-  fmu_src/fmi2/fmi2_logging.h
-  fmu_src/fmi2/fmi2_state_machine.h
-  fmu_src/fmi2/fmi2_derivatives.h
+  fmu_src/fmi2/fmi2_layer.h
+  fmu_src/runtime/runtime.h
+  fmu_src/runtime/instance.h
+  fmu_src/runtime/outputs.h
+  fmu_src/runtime/state_image.h
   fmu_src/common/ak_bytes.h
   fmu_src/common/ak_compiler.h
   fmu_src/models/model.h
-  fmu_src/models/model_outputs.h
-  fmu_src/models/model_state_image.h
   fmu_src/models/log_categories.h)
 set(AK_FMI3_SOURCES
-  fmu_src/fmi3/fmi3_instance.c
-  fmu_src/fmi3/fmi3_logging.c
+  fmu_src/fmi3/fmi3_layer.c
   fmu_src/fmi3/fmi3_state_machine.c
   fmu_src/fmi3/fmi3_lifecycle.c
   fmu_src/fmi3/fmi3_values.c
@@ -51,16 +54,15 @@ set(AK_FMI3_SOURCES
   fmu_src/fmi3/fmi3_fmu_state.c
   fmu_src/fmi3/fmi3_unsupported.c)
 set(AK_FMI3_HEADERS
-  fmu_src/fmi3/fmi3_instance.h
-  fmu_src/fmi3/fmi3_logging.h
-  fmu_src/fmi3/fmi3_state_machine.h
+  fmu_src/fmi3/fmi3_layer.h
   fmu_src/fmi3/fmi3_arrays.h
-  fmu_src/fmi3/fmi3_values.h
+  fmu_src/runtime/runtime.h
+  fmu_src/runtime/instance.h
+  fmu_src/runtime/outputs.h
+  fmu_src/runtime/state_image.h
   fmu_src/common/ak_bytes.h
   fmu_src/common/ak_compiler.h
   fmu_src/models/model.h
-  fmu_src/models/model_outputs.h
-  fmu_src/models/model_state_image.h
   fmu_src/models/log_categories.h)
 set(AK_FMI3_MODELS ${AK_MODELS})  # the same list under its former name
 set(AK_FMI3_ARRAYS_AngularKinematics

@@ -175,7 +175,8 @@ def variables_c(model):
         lines.append(
             f"    [{s.vr}] = {{{s.vr}, {c_string(s.name)}, AK_CAUSALITY_{s.causality.upper()}, "
             f"AK_TYPE_{s.fmi_type.upper()}, {group}, {c_string(s.type)}, {c_string(unit)}, "
-            f"{s.start!r}, {s.min!r}, {s.max!r}, {c_string(s.description)}, {len(inputs)}, "
+            f"{s.start!r}, {s.min!r}, {s.max!r}, {c_string(s.out_of_range)}, "
+            f"{c_string(s.description)}, {len(inputs)}, "
             f"{deps}}},")
     lines += ["};", ""]
     return "\n".join(lines)

@@ -27,6 +27,7 @@ class Scalar:
     min: float
     max: float
     description: str
+    out_of_range: str = ""  # parameters: why a value outside [min, max] is refused
     depends: list = field(default_factory=list)  # value references of inputs and states
     state: bool = False    # a continuous state (model exchange)
     derivative_of: int = None  # the value reference of the state this is der() of
@@ -117,17 +118,23 @@ def load(name):
                 fmi_type = "Integer"
                 start = float(items.index(entry["start"]) + 1)
                 low, high = 1.0, float(len(items))
+                listed = [f"{k} {item}" for k, item in enumerate(items, 1)]
+                listed = ", ".join(listed) if len(items) <= 2 else f"{listed[0]} .. {listed[-1]}"
+                out_of_range = f"is not an item of the Enumeration {declared} ({listed})"
             else:
                 fmi_type = "Real"
                 start = entry.get("start", 0.0)
                 start = float(start(*indices) if callable(start) else start)
                 low, high = float(entry.get("min", 0.0)), float(entry.get("max", 0.0))
+                note = entry.get("range_note")
+                out_of_range = f"is outside [{low:g}, {high:g}]" + (f", {note}" if note else "")
             keys = dict(zip("ij", indices))
             scalars.append(Scalar(
                 name=_element_name(entry["name"], indices), base=entry["name"], indices=indices,
                 vr=entry["vr"] + offset, causality=entry["causality"], type=declared,
                 fmi_type=fmi_type, group=_group(entry), start=start, min=low,
                 max=high, description=entry["description"].format(**keys),
+                out_of_range=out_of_range if entry["causality"] == "parameter" else "",
                 depends=entry.get("depends", []), state=entry.get("state", False),
                 initial_depends=entry.get("initial_depends", []),
                 computed_by=tuple(entry["computed_by"]) if "computed_by" in entry else None))

@@ -69,16 +69,19 @@ CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c",
                 "core/kinematics_general_jacobian.c", "core/attitude.c"]
 CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h",
                 "core/kinematics_general_jacobian.h", "core/attitude.h"]
-# beside every model
-MODEL_SOURCES = ["models/model_data.c", "models/model_log.c", "models/model_outputs.c",
-                 "models/model_state_image.c", "models/model_derived.c"]
-FMI2_SOURCES = ["fmi2/fmi2_instance.c", "fmi2/fmi2_logging.c", "fmi2/fmi2_state_machine.c",
-                "fmi2/fmi2_lifecycle.c", "fmi2/fmi2_values.c", "fmi2/fmi2_cosimulation.c",
-                "fmi2/fmi2_model_exchange.c", "fmi2/fmi2_derivatives.c", "fmi2/fmi2_fmu_state.c"]
-FMI2_HEADERS = ["fmi2/fmi2_instance.h", "fmi2/fmi2_logging.h", "fmi2/fmi2_state_machine.h",
-                "fmi2/fmi2_derivatives.h", "common/ak_bytes.h", "common/ak_compiler.h",
-                "models/model.h",
-                "models/model_outputs.h", "models/model_state_image.h", "models/log_categories.h"]
+# The FMI runtime under both FMI layers (fmu_src/runtime/), FMI-independent.
+RUNTIME_SOURCES = ["runtime/instance.c", "runtime/outputs.c", "runtime/lifecycle.c",
+                   "runtime/values.c", "runtime/stepping.c", "runtime/continuous.c",
+                   "runtime/derivatives.c", "runtime/state_image.c", "runtime/fmu_states.c"]
+RUNTIME_HEADERS = ["runtime/runtime.h", "runtime/instance.h", "runtime/outputs.h",
+                   "runtime/state_image.h", "common/ak_bytes.h", "common/ak_compiler.h",
+                   "models/model.h", "models/log_categories.h"]
+# beside every model: the runtime, the model-side logging and the chain rule of derived outputs
+MODEL_SOURCES = RUNTIME_SOURCES + ["models/model_log.c", "models/model_derived.c"]
+FMI2_SOURCES = ["fmi2/fmi2_layer.c", "fmi2/fmi2_state_machine.c", "fmi2/fmi2_lifecycle.c",
+                "fmi2/fmi2_values.c", "fmi2/fmi2_cosimulation.c", "fmi2/fmi2_model_exchange.c",
+                "fmi2/fmi2_derivatives.c", "fmi2/fmi2_fmu_state.c"]
+FMI2_HEADERS = ["fmi2/fmi2_layer.h"] + RUNTIME_HEADERS
 
 # The models, each a folder fmu_src/models/<name>/ with description.py, each built as an FMI 2.0
 # FMU (dist/<name>.fmu) and an FMI 3.0 FMU (dist/fmi3/<name>.fmu). The one list: CMake reads it

@@ -1,20 +1,20 @@
 /* The allowed-state table of the FMI 2.0 state machines: co-simulation (FMI 2.0.4, section
  * 4.2.4) and model exchange (section 3.2.3). An instance lives in one of the two machines, chosen
- * by fmi2Instantiate's fmuType; the functions of the other interface are refused. */
-#include "fmi2_state_machine.h"
-
-#include "fmi2_logging.h"
+ * by fmi2Instantiate's fmuType; the functions of the other interface are refused. StepInProgress
+ * and StepCanceled belong to asynchronous stepping, which this FMU does not offer; they appear in
+ * the masks to keep the table the standard's. */
+#include "fmi2_layer.h"
 
 enum {
-    INSTANTIATED = AK_STATE_INSTANTIATED,
-    INITIALIZATION_MODE = AK_STATE_INITIALIZATION_MODE,
-    STEP_COMPLETE = AK_STATE_STEP_COMPLETE,
-    STEP_IN_PROGRESS = AK_STATE_STEP_IN_PROGRESS,
-    STEP_FAILED = AK_STATE_STEP_FAILED,
-    STEP_CANCELED = AK_STATE_STEP_CANCELED,
-    TERMINATED = AK_STATE_TERMINATED,
-    EVENT_MODE = AK_STATE_EVENT_MODE,
-    CONTINUOUS_TIME_MODE = AK_STATE_CONTINUOUS_TIME_MODE,
+    INSTANTIATED = AK_INSTANTIATED,
+    INITIALIZATION_MODE = AK_INITIALIZATION_MODE,
+    STEP_COMPLETE = AK_STEP_MODE,
+    STEP_IN_PROGRESS = AK_STEP_IN_PROGRESS,
+    STEP_FAILED = AK_STEP_FAILED,
+    STEP_CANCELED = AK_STEP_CANCELED,
+    TERMINATED = AK_TERMINATED,
+    EVENT_MODE = AK_EVENT_MODE,
+    CONTINUOUS_TIME_MODE = AK_CONTINUOUS_TIME_MODE,
     ANY_STATE = INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE | STEP_IN_PROGRESS |
                 STEP_FAILED | STEP_CANCELED | TERMINATED | EVENT_MODE | CONTINUOUS_TIME_MODE,
     /* Where the values of the variables can be read. */
@@ -31,9 +31,9 @@ enum {
     ME_READABLE = INITIALIZATION_MODE | EVENT_MODE | CONTINUOUS_TIME_MODE | TERMINATED
 };
 
-enum { CS = AK_INTERFACE_CS, ME = AK_INTERFACE_ME, BOTH = CS | ME };
+enum { CS = AK_CO_SIMULATION, ME = AK_MODEL_EXCHANGE, BOTH = CS | ME };
 
-const ak_function_rule AK_FUNCTION_RULES[AK_N_FMI2_FUNCTIONS] = {
+const ak_function_rule FMI2_RULES[AK_N_FMI2_FUNCTIONS] = {
     [AK_FMI2_SET_DEBUG_LOGGING] = {"fmi2SetDebugLogging", ANY_STATE, BOTH},
     [AK_FMI2_FREE_INSTANCE] = {"fmi2FreeInstance", ANY_STATE & ~STEP_IN_PROGRESS, BOTH},
     [AK_FMI2_SETUP_EXPERIMENT] = {"fmi2SetupExperiment", INSTANTIATED, BOTH},
@@ -90,46 +90,3 @@ const ak_function_rule AK_FUNCTION_RULES[AK_N_FMI2_FUNCTIONS] = {
                                                        CONTINUOUS_TIME_MODE | TERMINATED,
                                                    ME},
 };
-
-const char *ak_function_name(ak_function function) {
-    return AK_FUNCTION_RULES[function].name;
-}
-
-const char *ak_state_name(ak_state state) {
-    switch (state) {
-    case AK_STATE_INSTANTIATED: return "Instantiated";
-    case AK_STATE_INITIALIZATION_MODE: return "InitializationMode";
-    case AK_STATE_STEP_COMPLETE: return "StepComplete";
-    case AK_STATE_STEP_IN_PROGRESS: return "StepInProgress";
-    case AK_STATE_STEP_FAILED: return "StepFailed";
-    case AK_STATE_STEP_CANCELED: return "StepCanceled";
-    case AK_STATE_TERMINATED: return "Terminated";
-    case AK_STATE_EVENT_MODE: return "EventMode";
-    case AK_STATE_CONTINUOUS_TIME_MODE: return "ContinuousTimeMode";
-    }
-    return "unknown";
-}
-
-bool ak_call_checked(const ak_instance *instance, ak_function function) {
-    if (instance == NULL) {
-        return false;
-    }
-    const unsigned int interface = instance->fmu_type == fmi2ModelExchange ? ME : CS;
-    if ((AK_FUNCTION_RULES[function].interfaces & interface) == 0) {
-        ak_log(instance, AK_LOG_ERROR, fmi2Error,
-               "%s: a %s function, but this instance was created for %s",
-               AK_FUNCTION_RULES[function].name, interface == ME ? "co-simulation" : "model-exchange",
-               interface == ME ? "model exchange (fmi2ModelExchange)"
-                               : "co-simulation (fmi2CoSimulation)");
-        return false;
-    }
-    if ((AK_FUNCTION_RULES[function].allowed_states & (unsigned int)instance->state) == 0) {
-        ak_log(instance, AK_LOG_ERROR, fmi2Error, "%s: illegal call in state %s",
-               AK_FUNCTION_RULES[function].name, ak_state_name(instance->state));
-        return false;
-    }
-    if (ak_log_on(instance, AK_LOG_CALLS)) {
-        ak_log(instance, AK_LOG_CALLS, fmi2OK, "%s", AK_FUNCTION_RULES[function].name);
-    }
-    return true;
-}

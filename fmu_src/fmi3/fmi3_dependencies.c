@@ -4,17 +4,16 @@
  * the row-major order of the array, 0 for a scalar (FMI 3, section 2.2.10). The table lists the
  * inputs only: a model with continuous states, on which its outputs depend as well, does not
  * declare providesPerElementDependencies, and both functions refuse. */
-#include "fmi3Functions.h"
-#include "fmi3_values.h"
+#include "fmi3_layer.h"
 
-static bool provided(const ak3_instance *instance, ak3_function function) {
+static bool provided(const ak_instance *instance, ak3_function function) {
     if (AK_MODEL.n_states == 0) {
         return true;
     }
-    ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
             "%s: not provided by %s (modelDescription.xml: providesPerElementDependencies="
             "\"false\"; <ModelStructure> gives the dependencies per array)",
-            ak3_function_name(function), AK_MODEL.model_identifier);
+            fmi3_name(function), AK_MODEL.model_identifier);
     return false;
 }
 
@@ -32,14 +31,15 @@ static size_t element_index(const ak3_array *array, unsigned int scalar_vr) {
 
 fmi3Status fmi3GetNumberOfVariableDependencies(fmi3Instance c, fmi3ValueReference valueReference,
                                                size_t *nDependencies) {
-    ak3_instance *instance = c;
+    ak_instance *instance = c;
     const ak3_function self = AK3_GET_NUMBER_OF_VARIABLE_DEPENDENCIES;
-    if (!ak3_call_allowed(instance, self) || !provided(instance, self)) {
+    const char *name = fmi3_name(self);
+    if (!fmi3_allowed(instance, self) || !provided(instance, self)) {
         return fmi3Error;
     }
-    const ak3_array *array = ak3_array_of_causality(instance, self, "valueReference", 0,
+    const ak3_array *array = ak3_array_of_causality(instance, name, "valueReference", 0,
                                                     valueReference, AK_CAUSALITY_OUTPUT);
-    if (array == NULL || !ak3_given(instance, self, 1, "1", nDependencies, "nDependencies")) {
+    if (array == NULL || !ak_not_null(instance, name, nDependencies, "nDependencies")) {
         return fmi3Error;
     }
     *nDependencies = dependency_count(array);
@@ -52,25 +52,26 @@ fmi3Status fmi3GetVariableDependencies(fmi3Instance c, fmi3ValueReference depend
                                        size_t elementIndicesOfIndependents[],
                                        fmi3DependencyKind dependencyKinds[],
                                        size_t nDependencies) {
-    ak3_instance *instance = c;
+    ak_instance *instance = c;
     const ak3_function self = AK3_GET_VARIABLE_DEPENDENCIES;
-    if (!ak3_call_allowed(instance, self) || !provided(instance, self)) {
+    const char *name = fmi3_name(self);
+    if (!fmi3_allowed(instance, self) || !provided(instance, self)) {
         return fmi3Error;
     }
     const ak3_array *array =
-        ak3_array_of_causality(instance, self, "dependent", 0, dependent, AK_CAUSALITY_OUTPUT);
+        ak3_array_of_causality(instance, name, "dependent", 0, dependent, AK_CAUSALITY_OUTPUT);
     if (array == NULL ||
-        !ak3_given(instance, self, nDependencies, "nDependencies", elementIndicesOfDependent,
+        !ak_given(instance, name, nDependencies, "nDependencies", elementIndicesOfDependent,
                    "elementIndicesOfDependent") ||
-        !ak3_given(instance, self, nDependencies, "nDependencies", independents, "independents") ||
-        !ak3_given(instance, self, nDependencies, "nDependencies", elementIndicesOfIndependents,
+        !ak_given(instance, name, nDependencies, "nDependencies", independents, "independents") ||
+        !ak_given(instance, name, nDependencies, "nDependencies", elementIndicesOfIndependents,
                    "elementIndicesOfIndependents") ||
-        !ak3_given(instance, self, nDependencies, "nDependencies", dependencyKinds,
+        !ak_given(instance, name, nDependencies, "nDependencies", dependencyKinds,
                    "dependencyKinds")) {
         return fmi3Error;
     }
     if (nDependencies != dependency_count(array)) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                 "fmi3GetVariableDependencies: nDependencies = %zu, but %s has %zu "
                 "(fmi3GetNumberOfVariableDependencies)",
                 nDependencies, array->name, dependency_count(array));

@@ -1,33 +1,41 @@
-/* The allowed-state table of FMI 3.0: model exchange (section 3.2) and co-simulation (section
- * 4.2). An instance lives in one machine, chosen by the fmi3Instantiate* function that made it.
- * Co-simulation instances never use Event Mode (hasEventMode is not declared and
- * fmi3InstantiateCoSimulation refuses eventModeUsed), so fmi3EnterEventMode,
- * fmi3UpdateDiscreteStates and fmi3EnterStepMode are refused for them by the table. */
-#include "fmi3_state_machine.h"
+/* The allowed-state table of FMI 3.0: model exchange and co-simulation, as fmi-standard's
+ * docs/2_3_common_states.adoc, 3_2 and 4_2 list the allowed calls of each state. An instance
+ * lives in one machine, chosen by the fmi3Instantiate* function that made it. Co-simulation
+ * instances never use Event Mode (hasEventMode is not declared and fmi3InstantiateCoSimulation
+ * refuses eventModeUsed), so fmi3EnterEventMode, fmi3UpdateDiscreteStates and fmi3EnterStepMode
+ * are refused for them by the table. ConfigurationMode and ReconfigurationMode exist only for
+ * structural parameters, which these models do not have: no instance ever enters them. */
+#include "fmi3_layer.h"
 
 enum {
-    INSTANTIATED = AK3_STATE_INSTANTIATED,
-    CONFIGURATION_MODE = AK3_STATE_CONFIGURATION_MODE,
-    INITIALIZATION_MODE = AK3_STATE_INITIALIZATION_MODE,
-    EVENT_MODE = AK3_STATE_EVENT_MODE,
-    STEP_MODE = AK3_STATE_STEP_MODE,
-    CONTINUOUS_TIME_MODE = AK3_STATE_CONTINUOUS_TIME_MODE,
-    RECONFIGURATION_MODE = AK3_STATE_RECONFIGURATION_MODE,
-    TERMINATED = AK3_STATE_TERMINATED,
+    INSTANTIATED = AK_INSTANTIATED,
+    CONFIGURATION_MODE = AK_CONFIGURATION_MODE,
+    INITIALIZATION_MODE = AK_INITIALIZATION_MODE,
+    EVENT_MODE = AK_EVENT_MODE,
+    STEP_MODE = AK_STEP_MODE,
+    CONTINUOUS_TIME_MODE = AK_CONTINUOUS_TIME_MODE,
+    RECONFIGURATION_MODE = AK_RECONFIGURATION_MODE,
+    TERMINATED = AK_TERMINATED,
     ANY_STATE = INSTANTIATED | CONFIGURATION_MODE | INITIALIZATION_MODE | EVENT_MODE | STEP_MODE |
                 CONTINUOUS_TIME_MODE | RECONFIGURATION_MODE | TERMINATED,
-    /* Where variables can be read. */
-    READABLE = INITIALIZATION_MODE | EVENT_MODE | STEP_MODE | CONTINUOUS_TIME_MODE | TERMINATED,
+    /* Where variables can be read: in Instantiated the start values, or what was set since
+     * ("Functions fmi3Get{VariableType}: Returns the current start values as defined in
+     * modelDescription.xml or as set by fmi3Set{VariableType}", 2_3, State: Instantiated). */
+    READABLE = INSTANTIATED | INITIALIZATION_MODE | EVENT_MODE | STEP_MODE | CONTINUOUS_TIME_MODE |
+               TERMINATED,
     /* Where some variable can be set: parameters in Instantiated and Initialization Mode, inputs
      * also in Event, Step and Continuous-Time Mode (all inputs are continuous). */
     WRITABLE = INSTANTIATED | INITIALIZATION_MODE | EVENT_MODE | STEP_MODE | CONTINUOUS_TIME_MODE,
-    /* Where model exchange's states, derivatives and event indicators can be read. */
+    /* Where the partial derivatives are defined (2_2): not in Instantiated. */
+    DERIVABLE = INITIALIZATION_MODE | EVENT_MODE | STEP_MODE | CONTINUOUS_TIME_MODE | TERMINATED,
+    /* Where model exchange's states, their derivatives, nominals and event indicators can be
+     * read (2_3: Initialization Mode, the Initialized super state, Terminated). */
     ME_READABLE = INITIALIZATION_MODE | EVENT_MODE | CONTINUOUS_TIME_MODE | TERMINATED
 };
 
-enum { ME = AK3_INTERFACE_ME, CS = AK3_INTERFACE_CS, BOTH = ME | CS };
+enum { ME = AK_MODEL_EXCHANGE, CS = AK_CO_SIMULATION, BOTH = ME | CS };
 
-const ak3_function_rule AK3_FUNCTION_RULES[AK3_N_FUNCTIONS] = {
+const ak_function_rule FMI3_RULES[AK3_N_FUNCTIONS] = {
     [AK3_SET_DEBUG_LOGGING] = {"fmi3SetDebugLogging", ANY_STATE, BOTH},
     [AK3_FREE_INSTANCE] = {"fmi3FreeInstance", ANY_STATE, BOTH},
     [AK3_ENTER_INITIALIZATION_MODE] = {"fmi3EnterInitializationMode", INSTANTIATED, BOTH},
@@ -70,60 +78,26 @@ const ak3_function_rule AK3_FUNCTION_RULES[AK3_N_FUNCTIONS] = {
     [AK3_SERIALIZED_FMU_STATE_SIZE] = {"fmi3SerializedFMUStateSize", ANY_STATE, BOTH},
     [AK3_SERIALIZE_FMU_STATE] = {"fmi3SerializeFMUState", ANY_STATE, BOTH},
     [AK3_DESERIALIZE_FMU_STATE] = {"fmi3DeserializeFMUState", ANY_STATE, BOTH},
-    [AK3_GET_DIRECTIONAL_DERIVATIVE] = {"fmi3GetDirectionalDerivative", READABLE, BOTH},
-    [AK3_GET_ADJOINT_DERIVATIVE] = {"fmi3GetAdjointDerivative", READABLE, BOTH},
+    [AK3_GET_DIRECTIONAL_DERIVATIVE] = {"fmi3GetDirectionalDerivative", DERIVABLE, BOTH},
+    [AK3_GET_ADJOINT_DERIVATIVE] = {"fmi3GetAdjointDerivative", DERIVABLE, BOTH},
     [AK3_UPDATE_DISCRETE_STATES] = {"fmi3UpdateDiscreteStates", EVENT_MODE, ME},
     [AK3_ENTER_CONTINUOUS_TIME_MODE] = {"fmi3EnterContinuousTimeMode", EVENT_MODE, ME},
     [AK3_COMPLETED_INTEGRATOR_STEP] = {"fmi3CompletedIntegratorStep", CONTINUOUS_TIME_MODE, ME},
-    [AK3_SET_TIME] = {"fmi3SetTime", EVENT_MODE | CONTINUOUS_TIME_MODE, ME},
+    /* 3_2, State: Continuous-Time Mode: "t := (time, 0) | fmi3SetTime"; in Event Mode time
+     * advances only through fmi3UpdateDiscreteStates. */
+    [AK3_SET_TIME] = {"fmi3SetTime", CONTINUOUS_TIME_MODE, ME},
     [AK3_SET_CONTINUOUS_STATES] = {"fmi3SetContinuousStates", CONTINUOUS_TIME_MODE, ME},
-    [AK3_GET_CONTINUOUS_STATE_DERIVATIVES] = {"fmi3GetContinuousStateDerivatives",
-                                              EVENT_MODE | CONTINUOUS_TIME_MODE | TERMINATED, ME},
+    [AK3_GET_CONTINUOUS_STATE_DERIVATIVES] = {"fmi3GetContinuousStateDerivatives", ME_READABLE,
+                                              ME},
     [AK3_GET_EVENT_INDICATORS] = {"fmi3GetEventIndicators", ME_READABLE, ME},
     [AK3_GET_CONTINUOUS_STATES] = {"fmi3GetContinuousStates", ME_READABLE, ME},
-    [AK3_GET_NOMINALS_OF_CONTINUOUS_STATES] = {"fmi3GetNominalsOfContinuousStates",
-                                               INSTANTIATED | ME_READABLE, ME},
+    [AK3_GET_NOMINALS_OF_CONTINUOUS_STATES] = {"fmi3GetNominalsOfContinuousStates", ME_READABLE,
+                                               ME},
+    /* The standard lists these in Instantiated and Event Mode only; importers (fmusim) ask them
+     * in Continuous-Time Mode too, and the answer never changes. */
     [AK3_GET_NUMBER_OF_EVENT_INDICATORS] = {"fmi3GetNumberOfEventIndicators", ANY_STATE, ME},
     [AK3_GET_NUMBER_OF_CONTINUOUS_STATES] = {"fmi3GetNumberOfContinuousStates", ANY_STATE, ME},
     [AK3_ENTER_STEP_MODE] = {"fmi3EnterStepMode", EVENT_MODE, CS},
     [AK3_GET_OUTPUT_DERIVATIVES] = {"fmi3GetOutputDerivatives", STEP_MODE | TERMINATED, CS},
     [AK3_DO_STEP] = {"fmi3DoStep", STEP_MODE, CS},
 };
-
-const char *ak3_state_name(ak3_state state) {
-    switch (state) {
-    case AK3_STATE_INSTANTIATED: return "Instantiated";
-    case AK3_STATE_CONFIGURATION_MODE: return "Configuration Mode";
-    case AK3_STATE_INITIALIZATION_MODE: return "Initialization Mode";
-    case AK3_STATE_EVENT_MODE: return "Event Mode";
-    case AK3_STATE_STEP_MODE: return "Step Mode";
-    case AK3_STATE_CONTINUOUS_TIME_MODE: return "Continuous-Time Mode";
-    case AK3_STATE_RECONFIGURATION_MODE: return "Reconfiguration Mode";
-    case AK3_STATE_TERMINATED: return "Terminated";
-    }
-    return "unknown";
-}
-
-bool ak3_call_checked(const ak3_instance *instance, ak3_function function) {
-    if (instance == NULL) {
-        return false;
-    }
-    const ak3_function_rule *rule = &AK3_FUNCTION_RULES[function];
-    const bool me = instance->interface == AK3_MODEL_EXCHANGE;
-    if ((rule->interfaces & (me ? AK3_INTERFACE_ME : AK3_INTERFACE_CS)) == 0) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: not available to this instance, made by %s%s", rule->name,
-                me ? "fmi3InstantiateModelExchange" : "fmi3InstantiateCoSimulation",
-                me ? "" : " without Event Mode");
-        return false;
-    }
-    if ((rule->allowed_states & (unsigned int)instance->state) == 0) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: illegal call in state %s", rule->name,
-                ak3_state_name(instance->state));
-        return false;
-    }
-    if (ak3_log_on(instance, AK_LOG_CALLS)) {
-        ak3_log(instance, AK_LOG_CALLS, fmi3OK, "%s", rule->name);
-    }
-    return true;
-}

@@ -6,30 +6,27 @@
  * and returns fmi3OK, as its FMI 2 counterpart does. */
 #include <stddef.h>
 
-#include "fmi3Functions.h"
-#include "fmi3_instance.h"
-#include "fmi3_logging.h"
-#include "fmi3_state_machine.h"
+#include "fmi3_layer.h"
 
 /* A getter or setter of a type no variable has: every value reference is unknown. */
 static fmi3Status absent_type(fmi3Instance c, ak3_function function, const char *type,
                               const fmi3ValueReference vr[], size_t nvr, const void *values,
                               size_t nValues) {
-    const ak3_instance *instance = c;
-    if (!ak3_call_allowed(instance, function)) {
+    const ak_instance *instance = c;
+    if (!fmi3_allowed(instance, function)) {
         return fmi3Error;
     }
     if ((nvr > 0 && vr == NULL) || (nValues > 0 && values == NULL)) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: %s is NULL with %s = %zu",
-                ak3_function_name(function), vr == NULL ? "valueReferences" : "values",
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu",
+                fmi3_name(function), vr == NULL ? "valueReferences" : "values",
                 vr == NULL ? "nValueReferences" : "nValues", vr == NULL ? nvr : nValues);
         return fmi3Error;
     }
     if (nvr > 0 || nValues > 0) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                 "%s: valueReferences[0] = %u: this FMU has no %s variables (nValueReferences = "
                 "%zu, nValues = %zu)",
-                ak3_function_name(function), nvr > 0 ? vr[0] : 0u, type, nvr, nValues);
+                fmi3_name(function), nvr > 0 ? vr[0] : 0u, type, nvr, nValues);
         return fmi3Error;
     }
     return fmi3OK;
@@ -37,9 +34,9 @@ static fmi3Status absent_type(fmi3Instance c, ak3_function function, const char 
 
 /* A function of a feature the models lack: refused in every state. */
 static fmi3Status not_supported(fmi3Instance c, const char *function, const char *why) {
-    const ak3_instance *instance = c;
+    const ak_instance *instance = c;
     if (instance != NULL) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: not supported: %s", function, why);
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: not supported: %s", function, why);
     }
     return fmi3Error;
 }
@@ -248,9 +245,9 @@ fmi3Instance fmi3InstantiateScheduledExecution(
     fmi3LockPreemptionCallback lockPreemption, fmi3UnlockPreemptionCallback unlockPreemption) {
     (void)instanceName, (void)instantiationToken, (void)resourcePath, (void)visible;
     (void)loggingOn, (void)clockUpdate, (void)lockPreemption, (void)unlockPreemption;
-    ak3_log_before_instance(instanceEnvironment, logMessage,
-                            "fmi3InstantiateScheduledExecution: not supported: this FMU has no "
-                            "ScheduledExecution interface (use fmi3InstantiateCoSimulation or "
-                            "fmi3InstantiateModelExchange)");
+    fmi3_refuse_instantiation(instanceEnvironment, logMessage,
+                              "fmi3InstantiateScheduledExecution: not supported: this FMU has no "
+                              "ScheduledExecution interface (use fmi3InstantiateCoSimulation or "
+                              "fmi3InstantiateModelExchange)");
     return NULL;
 }

@@ -9,19 +9,7 @@
 #include <string.h>
 
 #include "ak_bytes.h"
-#include "ak_compiler.h"
-#include "fmi3Functions.h"
-#include "fmi3_values.h"
-
-bool ak3_given(const ak3_instance *instance, ak3_function function, size_t n,
-               const char *count_name, const void *pointer, const char *pointer_name) {
-    if (n > 0 && pointer == NULL) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: %s is NULL with %s = %zu",
-                ak3_function_name(function), pointer_name, count_name, n);
-        return false;
-    }
-    return true;
-}
+#include "fmi3_layer.h"
 
 static const char *type_name(ak_type type) {
     return type == AK_TYPE_INTEGER ? "Enumeration (fmi3GetInt64/fmi3SetInt64)"
@@ -29,40 +17,40 @@ static const char *type_name(ak_type type) {
 }
 
 /* The array of a value reference whose variable has the function's type; NULL after logging. */
-static const ak3_array *array_of_type(const ak3_instance *instance, ak3_function function,
+static const ak3_array *array_of_type(const ak_instance *instance, const char *function,
                                       size_t index, unsigned int vr, ak_type type) {
     const ak3_array *array = ak3_array_of(vr);
     if (array == NULL) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                 "%s: valueReferences[%zu] = %u is not a value reference of this FMU's FMI 3 "
                 "variables (docs/fmi3_variables.md)",
-                ak3_function_name(function), index, vr);
+                function, index, vr);
         return NULL;
     }
     const ak_variable *variable = &AK_MODEL.variables[vr]; /* known: an array */
     if (variable->type != type) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: valueReferences[%zu] = %u is %s, of type %s", ak3_function_name(function),
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                "%s: valueReferences[%zu] = %u is %s, of type %s", function,
                 index, vr, array->name, type_name(variable->type));
         return NULL;
     }
     return array;
 }
 
-const ak3_array *ak3_array_of_causality(const ak3_instance *instance, ak3_function function,
+const ak3_array *ak3_array_of_causality(const ak_instance *instance, const char *function,
                                         const char *list_name, size_t index, unsigned int vr,
                                         ak_causality causality) {
     const ak3_array *array = ak3_array_of(vr);
     if (array == NULL) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                 "%s: %s[%zu] = %u is not a value reference of this FMU's FMI 3 variables",
-                ak3_function_name(function), list_name, index, vr);
+                function, list_name, index, vr);
         return NULL;
     }
     const ak_causality found = AK_MODEL.variables[vr].causality;
     if (found != causality) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
-                ak3_function_name(function), list_name, index, vr, array->name,
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
+                function, list_name, index, vr, array->name,
                 found == AK_CAUSALITY_PARAMETER ? "a" : "an", ak_causality_name(found),
                 ak_causality_name(causality));
         return NULL;
@@ -78,60 +66,24 @@ static const char *name_of_vr(unsigned int vr) {
     return array != NULL ? array->name : "?";
 }
 
-bool ak3_count_matches(const ak3_instance *instance, ak3_function function, const char *count_name,
+bool ak3_count_matches(const ak_instance *instance, const char *function, const char *count_name,
                        size_t n, size_t total, const unsigned int vr[], size_t n_vr) {
     if (n == total) {
         return true;
     }
-    ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
             "%s: %s = %zu, but the %zu value references (%s%s%s) have %zu elements (too %s); "
             "nothing read or written",
-            ak3_function_name(function), count_name, n, n_vr, n_vr > 0 ? name_of_vr(vr[0]) : "",
+            function, count_name, n, n_vr, n_vr > 0 ? name_of_vr(vr[0]) : "",
             n_vr > 1 ? " .. " : "", n_vr > 1 ? name_of_vr(vr[n_vr - 1]) : "", total,
             n < total ? "few" : "many");
     return false;
 }
 
-/* A parameter may be set only in Instantiated and Initialization Mode (variability fixed), to a
- * value the model accepts. */
-static bool parameter_settable(const ak3_instance *instance, ak3_function function, size_t index,
-                               const ak_variable *variable, double value) {
-    if ((instance->state & (AK3_STATE_INSTANTIATED | AK3_STATE_INITIALIZATION_MODE)) == 0) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: %s (valueReferences[%zu] = %u) is a parameter of variability fixed: it can "
-                "be set only in Instantiated and Initialization Mode, not in %s; no value set",
-                ak3_function_name(function), variable->name, index, variable->value_reference,
-                ak3_state_name(instance->state));
-        return false;
-    }
-    const char *why = AK_MODEL.check_parameter(variable, value);
-    if (why != NULL) {
-        ak3_log(instance, AK_LOG_ERROR, fmi3Error,
-                "%s: %s = %.17g (valueReferences[%zu] = %u) %s; no value set",
-                ak3_function_name(function), variable->name, value, index,
-                variable->value_reference, why);
-        return false;
-    }
-    return true;
-}
-
-static void store(ak3_instance *instance, ak3_function function, bool trace, unsigned int vr,
-                  double value) {
-    if (trace) {
-        ak3_log(instance, AK_LOG_CALLS, fmi3OK, "%s: %s = %.17g", ak3_function_name(function),
-                AK_MODEL.variables[vr].name, value);
-    }
-    /* Only a real change makes the outputs stale: importers often set unchanged inputs. */
-    if (!ak_same_double(instance->data.values[vr], value)) {
-        instance->data.values[vr] = value;
-        ak3_instance_inputs_changed(instance);
-    }
-}
-
-static bool arguments_given(const ak3_instance *instance, ak3_function function, size_t nvr,
+static bool arguments_given(const ak_instance *instance, const char *function, size_t nvr,
                             const void *vr, size_t n_values, const void *values) {
-    return ak3_given(instance, function, nvr, "nValueReferences", vr, "valueReferences") &&
-           ak3_given(instance, function, n_values, "nValues", values, "values");
+    return ak_given(instance, function, nvr, "nValueReferences", vr, "valueReferences") &&
+           ak_given(instance, function, n_values, "nValues", values, "values");
 }
 
 /* The usual get of every communication point: arrays of outputs (their first value references),
@@ -159,8 +111,18 @@ static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values
     return total == n_values;
 }
 
+size_t ak3_expand(const unsigned int vr[], size_t n, unsigned int elements[], size_t capacity) {
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements && k < capacity; e++) {
+            elements[k++] = vr[i] + e;
+        }
+    }
+    return k;
+}
+
 /* The elements of checked value references, array after array. */
-static void copy_out(const ak3_instance *instance, const fmi3ValueReference vr[], size_t nvr,
+static void copy_out(const ak_instance *instance, const fmi3ValueReference vr[], size_t nvr,
                      fmi3Float64 values[]) {
     size_t k = 0;
     for (size_t i = 0; i < nvr; i++) {
@@ -201,7 +163,7 @@ static bool all_finite(const fmi3Float64 values[], size_t n_values) {
 /* Stores checked values of checked value references. As the FMI 2 layer: every value is
  * stored, and the outputs go stale only when one differs in any bit, so both layers evaluate the
  * same bits. */
-static void store_all(ak3_instance *instance, const fmi3ValueReference vr[], size_t nvr,
+static void store_all(ak_instance *instance, const fmi3ValueReference vr[], size_t nvr,
                       const fmi3Float64 values[]) {
     bool changed = false;
     size_t k = 0;
@@ -214,22 +176,22 @@ static void store_all(ak3_instance *instance, const fmi3ValueReference vr[], siz
         }
     }
     if (changed) {
-        ak3_instance_inputs_changed(instance);
+        ak_instance_inputs_changed(instance);
     }
 }
 
 fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t nValues) {
-    ak3_instance *instance = c;
-    const ak3_function self = AK3_GET_FLOAT64;
-    if (!ak3_call_allowed(instance, self) ||
+    ak_instance *instance = c;
+    const char *self = fmi3_name(AK3_GET_FLOAT64);
+    if (!fmi3_allowed(instance, AK3_GET_FLOAT64) ||
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
     }
     ak_group upto;
     bool one_run;
     if (usual_get(vr, nvr, nValues, &upto, &one_run)) {
-        const fmi3Status status = ak3_read_status(ak3_instance_update_outputs_upto(instance, upto));
+        const fmi3Status status = fmi3_status(ak_instance_update(instance, upto));
         if (one_run) {
             memcpy(values, &instance->data.values[vr[0]], nValues * sizeof values[0]);
         } else {
@@ -263,7 +225,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     }
     fmi3Status status = fmi3OK;
     if (main) {
-        status = ak3_read_status(ak3_instance_update_outputs_upto(instance, highest));
+        status = fmi3_status(ak_instance_update(instance, highest));
     }
     copy_out(instance, vr, nvr, values);
     return status;
@@ -271,14 +233,14 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
 
 /* fmi3SetFloat64 of anything but the usual set: each argument checked and a bad one named. Out
  * of line, so that the usual path stays a small function. */
-AK_NOINLINE static fmi3Status set_float64_checked(ak3_instance *instance,
+AK_NOINLINE static fmi3Status set_float64_checked(ak_instance *instance,
                                                   const fmi3ValueReference vr[], size_t nvr,
                                                   const fmi3Float64 values[], size_t nValues) {
-    const ak3_function self = AK3_SET_FLOAT64;
+    const char *self = fmi3_name(AK3_SET_FLOAT64);
     size_t total = 0;
     for (size_t i = 0; i < nvr; i++) {
         if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
-            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                     "fmi3SetFloat64: valueReferences[%zu] = %u is time, the independent "
                     "variable, which cannot be set; no value set",
                     i, vr[i]);
@@ -291,13 +253,13 @@ AK_NOINLINE static fmi3Status set_float64_checked(ak3_instance *instance,
         const ak_variable *variable = &AK_MODEL.variables[vr[i]];
         if (variable->causality == AK_CAUSALITY_OUTPUT ||
             variable->causality == AK_CAUSALITY_LOCAL) {
-            ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                     "fmi3SetFloat64: valueReferences[%zu] = %u is %s, %s %s%s: only inputs and "
                     "parameters can be set; no value set",
                     i, vr[i], array->name,
                     variable->causality == AK_CAUSALITY_OUTPUT ? "an" : "a",
                     ak_causality_name(variable->causality),
-                    ak3_is_state(vr[i]) ? " and a continuous state (fmi3SetContinuousStates sets "
+                    ak_state_index(AK_MODEL.state_vrs, vr[i]) >= 0 ? " and a continuous state (fmi3SetContinuousStates sets "
                                           "states in model exchange)"
                                         : "");
             return fmi3Error;
@@ -312,23 +274,23 @@ AK_NOINLINE static fmi3Status set_float64_checked(ak3_instance *instance,
         const bool parameter = AK_MODEL.variables[vr[i]].causality == AK_CAUSALITY_PARAMETER;
         for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++, k++) {
             if (!isfinite(values[k])) {
-                ak3_log(instance, AK_LOG_ERROR, fmi3Error,
+                ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                         "fmi3SetFloat64: %s = %g (values[%zu], valueReferences[%zu] = %u) is not "
                         "finite; no value set",
                         AK_MODEL.variables[vr[i] + e].name, values[k], k, i, vr[i]);
                 return fmi3Error;
             }
             if (parameter &&
-                !parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i] + e], values[k])) {
+                !ak_parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i] + e], values[k])) {
                 return fmi3Error;
             }
         }
     }
-    if (ak3_log_on(instance, AK_LOG_CALLS)) {
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
         k = 0;
         for (size_t i = 0; i < nvr; i++) {
             for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++) {
-                store(instance, self, true, vr[i] + e, values[k++]);
+                ak_store(instance, self, vr[i] + e, values[k++]);
             }
         }
         return fmi3OK;
@@ -339,25 +301,16 @@ AK_NOINLINE static fmi3Status set_float64_checked(ak3_instance *instance,
 
 fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Float64 values[], size_t nValues) {
-    ak3_instance *instance = c;
-    const ak3_function self = AK3_SET_FLOAT64;
-    if (!ak3_call_allowed(instance, self) ||
+    ak_instance *instance = c;
+    const char *self = fmi3_name(AK3_SET_FLOAT64);
+    if (!fmi3_allowed(instance, AK3_SET_FLOAT64) ||
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
     }
     bool one_run;
-    if (usual_set(vr, nvr, nValues, &one_run) && !ak3_log_on(instance, AK_LOG_CALLS)) {
-        if (one_run) { /* one check-and-copy of consecutive values (ak_bytes.h) */
-            double *target = &instance->data.values[vr[0]];
-            /* One vector of 3 is the usual set: with the count a constant, the compiler
-             * unrolls the check and the copy instead of calling memcpy. */
-            const ak_store_result stored = nValues == 3
-                                               ? ak_store_if_finite(target, values, 3)
-                                               : ak_store_if_finite(target, values, nValues);
-            if (stored == AK_STORE_CHANGED) {
-                ak3_instance_inputs_changed(instance);
-            }
-            if (stored != AK_STORE_REFUSED) {
+    if (usual_set(vr, nvr, nValues, &one_run) && !ak_log_on(instance, AK_LOG_CALLS)) {
+        if (one_run) { /* one check-and-copy of consecutive values */
+            if (ak_store_inputs(instance, vr[0], values, nValues)) {
                 return fmi3OK;
             }
         } else if (all_finite(values, nValues)) {
@@ -370,9 +323,9 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
 
 fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         fmi3Int64 values[], size_t nValues) {
-    ak3_instance *instance = c;
-    const ak3_function self = AK3_GET_INT64;
-    if (!ak3_call_allowed(instance, self) ||
+    ak_instance *instance = c;
+    const char *self = fmi3_name(AK3_GET_INT64);
+    if (!fmi3_allowed(instance, AK3_GET_INT64) ||
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
     }
@@ -395,9 +348,9 @@ fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
 
 fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         const fmi3Int64 values[], size_t nValues) {
-    ak3_instance *instance = c;
-    const ak3_function self = AK3_SET_INT64;
-    if (!ak3_call_allowed(instance, self) ||
+    ak_instance *instance = c;
+    const char *self = fmi3_name(AK3_SET_INT64);
+    if (!fmi3_allowed(instance, AK3_SET_INT64) ||
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
         return fmi3Error;
     }
@@ -413,14 +366,13 @@ fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
-        /* An Int64 far out of range becomes a large double, which check_parameter refuses. */
-        if (!parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i]], (double)values[i])) {
+        /* An Int64 far out of range becomes a large double, which the parameter range refuses. */
+        if (!ak_parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i]], (double)values[i])) {
             return fmi3Error;
         }
     }
-    const bool trace = ak3_log_on(instance, AK_LOG_CALLS);
     for (size_t i = 0; i < nvr; i++) {
-        store(instance, self, trace, vr[i], (double)values[i]);
+        ak_store(instance, self, vr[i], (double)values[i]);
     }
     return fmi3OK;
 }

@@ -1,7 +1,7 @@
-/* The model descriptor: all that an FMI layer (fmi2/, fmi3/) knows of a model, and all that
- * a model knows of an instance. Each FMU binary is compiled with exactly one model folder, whose
- * model.c defines AK_MODEL; its variable table is generated from its description.py
- * (codegen/generate.py).
+/* The model descriptor: all that the runtime and the FMI layers (runtime/, fmi2/, fmi3/) know of
+ * a model, and all that a model knows of an instance. Each FMU binary is compiled with exactly
+ * one model folder, whose model.c defines AK_MODEL; its variable table is generated from its
+ * description.py (python -m codegen).
  *
  * Values live in one array indexed by value reference. Value references are the description's
  * and never move; the rules the layers rely on (checked by the generator):
@@ -58,6 +58,7 @@ typedef struct {
     const char *unit;          /* "" when none */
     double start;              /* inputs and parameters */
     double min, max;           /* parameters: the values a setter accepts */
+    const char *out_of_range;  /* parameters: why a value outside [min, max] is refused */
     const char *description;
     size_t n_dependencies; /* outputs only: the inputs it structurally depends on */
     unsigned int dependencies[AK_MAX_DEPENDENCIES];
@@ -119,8 +120,6 @@ typedef struct {
     /* Both groups at once, what evaluate then evaluate_lazy give, for less (a read of every
      * output, which fmpy makes by default, pays one evaluation); NULL: the layer calls the two. */
     ak_eval_status (*evaluate_all)(ak_model_data *data);
-    /* NULL when the value is acceptable for the parameter, else why not (for the message). */
-    const char *(*check_parameter)(const ak_variable *variable, double value);
 
     /* Optional capabilities: NULL when the model does not have them (the FMI function then
      * refuses with a message naming the modelDescription.xml flag). */
@@ -138,8 +137,8 @@ typedef struct {
      * which they are is the variable table's group AK_GROUP_DERIVED. */
     const ak_derived_outputs *derived;
     /* True for a model whose evaluation can fail, or whose outputs depend on the path (the
-     * unwrapped angles of AttitudePropagator): fmi2DoStep and fmi3DoStep then evaluate at the
-     * end of the step and return fmi2Discard (StepFailed) / fmi3Discard when it fails. */
+     * unwrapped angles of AttitudePropagator): a co-simulation step then evaluates at the end
+     * of the step, and is discarded when that fails. */
     bool evaluate_in_step;
 
     /* Continuous states: 0 / NULL for a model without. The states and their derivatives are
@@ -155,7 +154,7 @@ typedef struct {
      * (those at the step start); AK_EVAL_FAILED (logged) leaves them as they were. */
     ak_eval_status (*step)(ak_model_data *data, double h);
     /* The states from the parameters: called at instantiation and reset, before each evaluation
-     * until fmi2ExitInitializationMode / fmi3ExitInitializationMode, and there; AK_EVAL_FAILED
+     * until the end of initialization, and there; AK_EVAL_FAILED
      * (logged) when the parameters give no valid start, which leaves the states as they were. */
     ak_eval_status (*initialize)(ak_model_data *data);
 } ak_model;
@@ -166,22 +165,6 @@ extern const ak_model AK_MODEL;
 /* Formats a message and hands it to the owner's logger (models/model_log.c). */
 void ak_model_log(const ak_model_data *data, ak_log_category category, ak_status status,
                   const char *format, ...) AK_PRINTF_FORMAT(4, 5);
-
-/* Every value at its start, no input derivative, the model's states from the parameters
- * (initialize): a new or reset instance (models/model_data.c). The logger stays as set. */
-void ak_model_data_reset(ak_model_data *data);
-
-/* The log categories of a new or reset instance: every one on but logCalls, which is on only
- * when logging was asked for at instantiation (models/model_log.c). */
-void ak_log_categories_reset(bool enabled[AK_N_LOG_CATEGORIES], bool calls);
-
-/* fmi2SetDebugLogging / fmi3SetDebugLogging (models/model_log.c): switches the n named
- * categories on or off (all of them when n is 0), after checking every name, so that a bad call
- * changes nothing; false, with a message naming the function and the bad name, if one is NULL or
- * no category. */
-bool ak_log_categories_set(const ak_model_data *data, const char *function,
-                           bool enabled[AK_N_LOG_CATEGORIES], size_t n,
-                           const char *const categories[], bool on);
 
 /* The derived outputs (AK_MODEL.derived), once both groups are current. */
 static inline void ak_model_compute_derived(ak_model_data *data) {
@@ -202,6 +185,12 @@ void ak_model_jacobian(const ak_model_data *data, const unsigned int out[], size
                        double J[][AK_MAX_KNOWNS]);
 void ak_model_output_derivatives(ak_model_data *data, const unsigned int vr[], size_t nvr,
                                  double value[]);
+
+/* NULL when the value is one the parameter accepts (its [min, max] of the variable table), else
+ * why not, for the message. */
+static inline const char *ak_parameter_refusal(const ak_variable *variable, double value) {
+    return value >= variable->min && value <= variable->max ? NULL : variable->out_of_range;
+}
 
 /* The variable of a value reference, or NULL when the model has none. */
 static inline const ak_variable *ak_variable_of(unsigned int vr) {

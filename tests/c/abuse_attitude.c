@@ -24,7 +24,7 @@
 
 #include "AttitudePropagator_variables.h"
 #include "fmi2Functions.h"
-#include "fmi2_instance.h"
+#include "fmi2_layer.h"
 
 static long live_allocations = 0;
 static pthread_mutex_t allocation_lock = PTHREAD_MUTEX_INITIALIZER;

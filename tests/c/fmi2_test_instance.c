@@ -111,7 +111,7 @@ bool ak_test_outputs_consistent(fmi2Component c) {
          * (ak_instance_update_outputs): a model that cannot start from them fails the read. */
         const bool initializing =
             AK_MODEL.initialize != NULL &&
-            (fresh.state & (AK_STATE_INSTANTIATED | AK_STATE_INITIALIZATION_MODE)) != 0;
+            (fresh.state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) != 0;
         expected_status = initializing && AK_MODEL.initialize(&fresh.data) == AK_EVAL_FAILED
                               ? AK_EVAL_FAILED
                               : AK_MODEL.evaluate(&fresh.data);

@@ -7,7 +7,7 @@
 #include <stdbool.h>
 
 #include "fmi2Functions.h"
-#include "fmi2_instance.h"
+#include "fmi2_layer.h"
 #include "fmi2_test_ops.h"
 
 /* The inputs every test instance is initialized with: the first AK_MODEL.n_inputs of these values

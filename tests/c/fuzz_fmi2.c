@@ -261,15 +261,15 @@ static void instantiate(ak_input *in, ak_slot *slot, ak_recorder *recorder) {
 }
 
 enum {
-    READABLE = AK_STATE_INITIALIZATION_MODE | AK_STATE_STEP_COMPLETE | AK_STATE_STEP_FAILED |
-               AK_STATE_STEP_CANCELED | AK_STATE_TERMINATED | AK_STATE_EVENT_MODE |
-               AK_STATE_CONTINUOUS_TIME_MODE
+    READABLE = AK_INITIALIZATION_MODE | AK_STEP_MODE | AK_STEP_FAILED |
+               AK_STEP_CANCELED | AK_TERMINATED | AK_EVENT_MODE |
+               AK_CONTINUOUS_TIME_MODE
 };
 
 static void check_instance(fmi2Component c) {
     const ak_instance *instance = c;
     const unsigned int state = (unsigned int)instance->state;
-    if (state == 0 || (state & (state - 1)) != 0 || state > AK_STATE_CONTINUOUS_TIME_MODE ||
+    if (state == 0 || (state & (state - 1)) != 0 || (state & ~(AK_INSTANTIATED | READABLE)) != 0 ||
         !isfinite(instance->time)) {
         violated();
     }

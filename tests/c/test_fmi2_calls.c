@@ -209,7 +209,7 @@ static void run_bad_call(const ak_bad_call *bad, size_t row, bool print_table) {
     const bool step_discarded = bad->op == AK_OP_DO_STEP && status == fmi2Discard;
     if (step_discarded) {
         fmi2Real last = -1.0;
-        check(((const ak_instance *)c)->state == AK_STATE_STEP_FAILED &&
+        check(((const ak_instance *)c)->state == AK_STEP_FAILED &&
                   fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &last) == fmi2OK &&
                   last == before.copy.time,
               context, "the discarded step did not leave the instance in StepFailed at its time");
@@ -399,7 +399,7 @@ static void run_legal_sequences(void) {
         check(ak_test_bring_to(c, AK_TEST_STATES[s]), context, "cannot reach state");
         check(fmi2Reset(c) == fmi2OK, context, "reset failed");
         const ak_instance *instance = c;
-        check(instance->state == AK_STATE_INSTANTIATED && instance->time == 0.0, context,
+        check(instance->state == AK_INSTANTIATED && instance->time == 0.0, context,
               "reset did not bring back the initial condition");
         for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
             const ak_variable *variable = ak_variable_of((unsigned int)vr);
@@ -646,7 +646,7 @@ static void run_model_specific(void) {
               context, "at the singularity: fmi2Discard naming theta[2]");
         fmi2Real last = -1.0;
         fmi2Boolean terminated = fmi2True;
-        check(((const ak_instance *)c)->state == AK_STATE_STEP_FAILED &&
+        check(((const ak_instance *)c)->state == AK_STEP_FAILED &&
                   fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &last) == fmi2OK &&
                   last == AK_TEST_STEP_COMPLETE_TIME &&
                   fmi2GetBooleanStatus(c, fmi2Terminated, &terminated) == fmi2OK &&

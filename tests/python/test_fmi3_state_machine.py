@@ -15,8 +15,13 @@ CS_STATES = ["Instantiated", "Initialization Mode", "Step Mode", "Terminated"]
 ME_STATES = ["Instantiated", "Initialization Mode", "Event Mode", "Continuous-Time Mode",
              "Terminated"]
 ALL = set(CS_STATES + ME_STATES)
+# Where the partial derivatives, and model exchange's states, are defined (FMI 3, 2_2, 2_3).
 READ_CS = {"Initialization Mode", "Step Mode", "Terminated"}
 READ_ME = {"Initialization Mode", "Event Mode", "Continuous-Time Mode", "Terminated"}
+# fmi3Get{VariableType} also in Instantiated: "Returns the current start values as defined in
+# modelDescription.xml or as set by fmi3Set{VariableType}" (2_3, State: Instantiated).
+GET_CS = {"Instantiated"} | READ_CS
+GET_ME = {"Instantiated"} | READ_ME
 
 # function: (states allowed for co-simulation, states allowed for model exchange)
 ALLOWED = {
@@ -24,7 +29,7 @@ ALLOWED = {
     "fmi3ExitInitializationMode": ({"Initialization Mode"}, {"Initialization Mode"}),
     "fmi3EnterEventMode": (set(), {"Continuous-Time Mode"}),
     "fmi3Terminate": ({"Step Mode"}, {"Event Mode", "Continuous-Time Mode"}),
-    "fmi3GetFloat64": (READ_CS, READ_ME),
+    "fmi3GetFloat64": (GET_CS, GET_ME),
     "fmi3SetFloat64": ({"Instantiated", "Initialization Mode", "Step Mode"},
                        {"Instantiated", "Initialization Mode", "Event Mode",
                         "Continuous-Time Mode"}),
@@ -38,11 +43,10 @@ ALLOWED = {
     "fmi3EnterContinuousTimeMode": (set(), {"Event Mode"}),
     "fmi3UpdateDiscreteStates": (set(), {"Event Mode"}),
     "fmi3CompletedIntegratorStep": (set(), {"Continuous-Time Mode"}),
-    "fmi3SetTime": (set(), {"Event Mode", "Continuous-Time Mode"}),
+    "fmi3SetTime": (set(), {"Continuous-Time Mode"}),  # 3_2: "t := (time, 0) | fmi3SetTime"
     "fmi3GetNumberOfContinuousStates": (set(), set(ME_STATES)),
     "fmi3GetContinuousStates": (set(), READ_ME),
-    "fmi3GetContinuousStateDerivatives": (set(), {"Event Mode", "Continuous-Time Mode",
-                                                  "Terminated"}),
+    "fmi3GetContinuousStateDerivatives": (set(), READ_ME),
     "fmi3GetEventIndicators": (set(), READ_ME),
     "fmi3GetFMUState": (set(CS_STATES), set(ME_STATES)),
     "fmi3SetDebugLogging": (set(CS_STATES), set(ME_STATES)),
@@ -168,10 +172,10 @@ STATE_FUNCTIONS = {
     "fmi3SetContinuousStates": ({"Continuous-Time Mode"},
                                 lambda i: i.call("fmi3SetContinuousStates",
                                                  doubles([0.5, 0.5, 0.5, 0.5]), 4)),
-    "fmi3GetContinuousStateDerivatives": ({"Event Mode", "Continuous-Time Mode", "Terminated"},
+    "fmi3GetContinuousStateDerivatives": (READ_ME,
                                           lambda i: i.call("fmi3GetContinuousStateDerivatives",
                                                            (ctypes.c_double * 4)(), 4)),
-    "fmi3GetNominalsOfContinuousStates": ({"Instantiated"} | READ_ME,
+    "fmi3GetNominalsOfContinuousStates": (READ_ME,
                                           lambda i: i.call("fmi3GetNominalsOfContinuousStates",
                                                            (ctypes.c_double * 4)(), 4)),
 }
@@ -206,13 +210,35 @@ def test_reset_returns_to_instantiated_with_start_values():
         instance.initialize(parameters={"sequence": 5}, inputs={"theta": [1.0, 2.0, 0.5]})
         assert instance.do_step(0.0, 0.1) == (OK, 0.1)
         assert instance.call("fmi3Reset") == OK
-        # Instantiated again: a parameter can be set, outputs cannot be read.
-        assert instance.get_raw(["omega_fixed"])[0] == ERROR
+        # Instantiated again: the start values are read back, and the outputs are those of
+        # the start values (all zero: every angle and rate starts at 0).
+        status, values = instance.get_raw(["theta", "omega_fixed"])
+        assert status == OK and values["theta"].tolist() == [0.0, 0.0, 0.0]
+        assert values["omega_fixed"].tolist() == [0.0, 0.0, 0.0]
         instance.initialize()
         assert instance.get(["theta"])["theta"].tolist() == [0.0, 0.0, 0.0]
         sequence = (ctypes.c_int64 * 1)()
         assert instance.call("fmi3GetInt64", vrs([70]), 1, sequence, 1) == OK
         assert sequence[0] == 1
         assert instance.do_step(0.0, 0.25) == (OK, 0.25)  # the time started again from 0
+    finally:
+        instance.free()
+
+
+def test_getters_in_instantiated_return_start_values_or_what_was_set():
+    """FMI 3, 2_3, State: Instantiated: fmi3Get{VariableType} "returns the current start values as
+    defined in modelDescription.xml or as set by fmi3Set{VariableType}"."""
+    instance = Instance3("EulerRates")
+    try:
+        status, values = instance.get_raw(["tolerance", "theta"])
+        assert status == OK and values["tolerance"].tolist() == [1e-4]
+        assert values["theta"].tolist() == [0.0, 0.0, 0.0]
+        assert instance.call("fmi3SetFloat64", vrs([instance.vr["theta"]]), 1,
+                             doubles([0.1, 0.2, 0.3]), 3) == OK
+        status, values = instance.get_raw(["theta"])
+        assert status == OK and values["theta"].tolist() == [0.1, 0.2, 0.3]
+        frame = (ctypes.c_int64 * 1)()
+        assert instance.call("fmi3GetInt64", vrs([instance.vr["frame"]]), 1, frame, 1) == OK
+        assert frame[0] == 1
     finally:
         instance.free()

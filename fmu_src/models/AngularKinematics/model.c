@@ -78,14 +78,6 @@ static ak_eval_status evaluate_all(ak_model_data *data) {
     return AK_EVAL_OK;
 }
 
-static const char *check_parameter(const ak_variable *variable, double value) {
-    (void)variable; /* the only parameter is sequence */
-    if (!(value >= 1.0 && value <= AK_SEQUENCE_COUNT)) {
-        return "is not an item of the Enumeration Sequence (1 body123 .. 24 space323)";
-    }
-    return NULL;
-}
-
 static void jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,
                      double J[][AK_MAX_KNOWNS]) {
     const double *v = data->values;
@@ -129,7 +121,7 @@ static void output_derivatives(ak_model_data *data, const unsigned int vr[], siz
         value[i] = sum;
         if (jerk_assumed && r < AK_VR_R) {
             ak_model_log(data, AK_LOG_CALLS, AK_STATUS_OK,
-                   "fmi2GetRealOutputDerivatives: d(%s)/dt uses theta_dddot = 0 (no nonzero "
+                   "d(%s)/dt uses theta_dddot = 0 (no nonzero "
                    "derivative of theta_ddot was given)",
                    AK_VARIABLES[r].name);
         }
@@ -145,7 +137,6 @@ const ak_model AK_MODEL = {
     .evaluate = evaluate,
     .evaluate_lazy = evaluate_lazy,
     .evaluate_all = evaluate_all,
-    .check_parameter = check_parameter,
     .jacobian = jacobian,
     .output_derivatives = output_derivatives,
     .can_interpolate_inputs = true,

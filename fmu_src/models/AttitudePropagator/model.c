@@ -396,22 +396,6 @@ static void jacobian(const ak_model_data *data, const unsigned int out[], size_t
     }
 }
 
-static const char *check_parameter(const ak_variable *variable, double value) {
-    switch (variable->value_reference) {
-    case AP_VR_SEQUENCE:
-        return value >= 1.0 && value <= AK_SEQUENCE_COUNT
-                   ? NULL
-                   : "is not an item of the Enumeration Sequence (1 body123 .. 24 space323)";
-    case AP_VR_FRAME:
-        return value == 1.0 || value == 2.0
-                   ? NULL
-                   : "is not an item of the Enumeration Frame (1 fixed, 2 body)";
-    default: /* q0: any finite value (the setter refuses the others); its norm is checked at
-              * initialization, when all four are known */
-        return NULL;
-    }
-}
-
 const ak_model AK_MODEL = {
     .model_identifier = "AttitudePropagator",
     .guid = AP_GUID,
@@ -420,7 +404,6 @@ const ak_model AK_MODEL = {
     .n_inputs = AP_N_INPUTS,
     .evaluate = evaluate,
     .evaluate_lazy = evaluate_lazy,
-    .check_parameter = check_parameter,
     .jacobian = jacobian,
     .output_derivatives = NULL,
     .can_interpolate_inputs = true,

@@ -57,6 +57,6 @@ VARIABLES = [
     dict(name="frame", vr=23, causality="parameter", type="Frame", start="fixed",
          description="frame of the components of the inputs omega and omega_dot"),
     dict(name="tolerance", vr=24, causality="parameter", type="Dimensionless", start=1e-4,
-         min=0.0, max=1.0,
+         min=0.0, max=1.0, range_note="the range of singularity_distance",
          description="singularity_distance below which a warning is logged (fmi2Warning)"),
 ]

@@ -53,23 +53,6 @@ static ak_eval_status evaluate(ak_model_data *data) {
     return AK_EVAL_OK;
 }
 
-static const char *check_parameter(const ak_variable *variable, double value) {
-    switch (variable->value_reference) {
-    case ER_VR_SEQUENCE:
-        return value >= 1.0 && value <= AK_SEQUENCE_COUNT
-                   ? NULL
-                   : "is not an item of the Enumeration Sequence (1 body123 .. 24 space323)";
-    case ER_VR_FRAME:
-        return value == 1.0 || value == 2.0
-                   ? NULL
-                   : "is not an item of the Enumeration Frame (1 fixed, 2 body)";
-    default: /* tolerance */
-        return value >= 0.0 && value <= 1.0
-                   ? NULL
-                   : "is outside [0, 1], the range of singularity_distance";
-    }
-}
-
 const ak_model AK_MODEL = {
     .model_identifier = "EulerRates",
     .guid = ER_GUID,
@@ -78,7 +61,6 @@ const ak_model AK_MODEL = {
     .n_inputs = ER_N_INPUTS,
     .evaluate = evaluate,
     .evaluate_lazy = NULL,
-    .check_parameter = check_parameter,
     .jacobian = NULL,
     .output_derivatives = NULL,
     .can_interpolate_inputs = true,

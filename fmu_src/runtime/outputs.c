@@ -1,5 +1,5 @@
-/* When a model's outputs are computed (models/model_outputs.h), for both FMI layers. */
-#include "model_outputs.h"
+/* When a model's outputs are computed (runtime/outputs.h), for both FMI layers. */
+#include "outputs.h"
 
 void ak_outputs_reset(ak_outputs *outputs) {
     outputs->stale = true;

@@ -21,8 +21,8 @@
  * A byte string is checked from its length to its last value before anything is decoded; a
  * check that fails logs, through the model's logger (ak_model_log), which one and the values
  * that failed it, prefixed with the calling FMI function's name. */
-#ifndef ANGULAR_KINEMATICS_MODEL_STATE_IMAGE_H
-#define ANGULAR_KINEMATICS_MODEL_STATE_IMAGE_H
+#ifndef ANGULAR_KINEMATICS_RUNTIME_STATE_IMAGE_H
+#define ANGULAR_KINEMATICS_RUNTIME_STATE_IMAGE_H
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -35,6 +35,13 @@ typedef struct {
     uint32_t version;
     const char *kind;          /* in messages: "FMU state", "FMI 3 FMU state" */
     const char *token_name;    /* in messages: "GUID", "instantiationToken" */
+    const char *interface_name; /* in messages: "fmuType", "interface" */
+    /* The state argument and the functions that make or size states, named in messages:
+     * "FMUstate", "fmi2GetFMUstate", "fmi2DeSerializeFMUstate", "fmi2SerializedFMUstateSize". */
+    const char *kind_argument;
+    const char *getter;
+    const char *deserializer;
+    const char *sizer;
     bool input_derivatives;    /* the image holds data->input_derivatives */
 } ak_state_format;
 
@@ -66,14 +73,13 @@ bool ak_state_image_check(const ak_state_format *format, const ak_model_data *da
                           const char *function, const unsigned char *bytes, size_t size,
                           ak_state_header *header);
 
-/* The checks of the content, after ak_state_image_check: state_possible(state, interface) (the
- * layer's states), the time fields, every value finite, every parameter one the model accepts,
+/* The checks of the content, after ak_state_image_check: state_possible (the header's state is
+ * one an instance of its interface can be in, which the caller decides), the time fields, every value finite, every parameter one the model accepts,
  * every input derivative finite. On success, values and (if the format has them) the input
  * derivatives of the image are in *content; data itself is not touched. */
-typedef bool (*ak_state_possible)(uint32_t state, uint32_t interface);
 bool ak_state_image_read(const ak_state_format *format, const ak_model_data *data,
                          const char *function, const unsigned char *bytes,
-                         const ak_state_header *header, ak_state_possible state_possible,
+                         const ak_state_header *header, bool state_possible,
                          double values[AK_MAX_VARIABLES],
                          double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER]);
 

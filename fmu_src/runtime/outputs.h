@@ -1,8 +1,8 @@
 /* When a model's outputs are computed: the freshness both FMI layers keep per instance, and the
- * one rule that brings it up to date (models/model_outputs.c). FMI-independent: a layer passes
+ * one rule that brings it up to date (runtime/outputs.c). FMI-independent: a layer passes
  * whether it is still before the end of initialization, and logs what ran in its own words. */
-#ifndef ANGULAR_KINEMATICS_MODEL_OUTPUTS_H
-#define ANGULAR_KINEMATICS_MODEL_OUTPUTS_H
+#ifndef ANGULAR_KINEMATICS_RUNTIME_OUTPUTS_H
+#define ANGULAR_KINEMATICS_RUNTIME_OUTPUTS_H
 
 #include <stdbool.h>
 

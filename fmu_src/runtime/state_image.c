@@ -1,10 +1,10 @@
-/* The byte image of an FMU state (model_state_image.h): written and checked here once for the
+/* The byte image of an FMU state (runtime/state_image.h): written and checked here once for the
  * FMI 2 and FMI 3 layers. */
 #include <math.h>
 #include <string.h>
 
 #include "ak_bytes.h"
-#include "model_state_image.h"
+#include "state_image.h"
 
 enum {
     OFFSET_MAGIC = 0,
@@ -122,11 +122,11 @@ bool ak_state_image_check(const ak_state_format *format, const ak_model_data *da
 
 bool ak_state_image_read(const ak_state_format *format, const ak_model_data *data,
                          const char *function, const unsigned char *bytes,
-                         const ak_state_header *header, ak_state_possible state_possible,
+                         const ak_state_header *header, bool state_possible,
                          double values[AK_MAX_VARIABLES],
                          double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER]) {
     const uint32_t stop_time_defined = ak_get_u32(bytes + OFFSET_STOP_TIME_DEFINED);
-    if (!state_possible(header->state, header->interface) || stop_time_defined > 1 ||
+    if (!state_possible || stop_time_defined > 1 ||
         ak_get_u32(bytes + OFFSET_RESERVED) != 0 || !isfinite(header->time) ||
         !isfinite(header->stop_time)) {
         ak_model_log(data, AK_LOG_ERROR, AK_STATUS_ERROR,
@@ -151,7 +151,7 @@ bool ak_state_image_read(const ak_state_format *format, const ak_model_data *dat
         const bool integral =
             variable->type != AK_TYPE_INTEGER || values[vr] == floor(values[vr]);
         if (variable->causality == AK_CAUSALITY_PARAMETER &&
-            (!integral || AK_MODEL.check_parameter(variable, values[vr]) != NULL)) {
+            (!integral || ak_parameter_refusal(variable, values[vr]) != NULL)) {
             ak_model_log(data, AK_LOG_ERROR, AK_STATUS_ERROR,
                          "%s: the FMU state holds the parameter %s = %.17g, which it cannot have",
                          function, variable->name, values[vr]);

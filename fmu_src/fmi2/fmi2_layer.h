@@ -1,0 +1,91 @@
+/* The FMI 2.0 layer: the FMI 2 entry points over the runtime (runtime/runtime.h). It knows no
+ * model, only the descriptor AK_MODEL; what it adds to the runtime is what the standard makes
+ * its own: the signatures, fmi2Status, the state table (fmi2_state_machine.c), the master's
+ * callbacks and the co-simulation status functions. */
+#ifndef ANGULAR_KINEMATICS_FMI2_LAYER_H
+#define ANGULAR_KINEMATICS_FMI2_LAYER_H
+
+#include <stdbool.h>
+
+#include "fmi2Functions.h"
+#include "runtime.h"
+
+typedef enum {
+    AK_FMI2_SET_DEBUG_LOGGING,
+    AK_FMI2_FREE_INSTANCE,
+    AK_FMI2_SETUP_EXPERIMENT,
+    AK_FMI2_ENTER_INITIALIZATION_MODE,
+    AK_FMI2_EXIT_INITIALIZATION_MODE,
+    AK_FMI2_TERMINATE,
+    AK_FMI2_RESET,
+    AK_FMI2_GET_REAL,
+    AK_FMI2_GET_INTEGER,
+    AK_FMI2_GET_BOOLEAN,
+    AK_FMI2_GET_STRING,
+    AK_FMI2_SET_REAL,
+    AK_FMI2_SET_INTEGER,
+    AK_FMI2_SET_BOOLEAN,
+    AK_FMI2_SET_STRING,
+    AK_FMI2_GET_FMU_STATE,
+    AK_FMI2_SET_FMU_STATE,
+    AK_FMI2_FREE_FMU_STATE,
+    AK_FMI2_SERIALIZED_FMU_STATE_SIZE,
+    AK_FMI2_SERIALIZE_FMU_STATE,
+    AK_FMI2_DE_SERIALIZE_FMU_STATE,
+    AK_FMI2_GET_DIRECTIONAL_DERIVATIVE,
+    AK_FMI2_SET_REAL_INPUT_DERIVATIVES,
+    AK_FMI2_GET_REAL_OUTPUT_DERIVATIVES,
+    AK_FMI2_DO_STEP,
+    AK_FMI2_CANCEL_STEP,
+    AK_FMI2_GET_STATUS,
+    AK_FMI2_GET_REAL_STATUS,
+    AK_FMI2_GET_INTEGER_STATUS,
+    AK_FMI2_GET_BOOLEAN_STATUS,
+    AK_FMI2_GET_STRING_STATUS,
+    AK_FMI2_ENTER_EVENT_MODE,
+    AK_FMI2_NEW_DISCRETE_STATES,
+    AK_FMI2_ENTER_CONTINUOUS_TIME_MODE,
+    AK_FMI2_COMPLETED_INTEGRATOR_STEP,
+    AK_FMI2_SET_TIME,
+    AK_FMI2_SET_CONTINUOUS_STATES,
+    AK_FMI2_GET_DERIVATIVES,
+    AK_FMI2_GET_EVENT_INDICATORS,
+    AK_FMI2_GET_CONTINUOUS_STATES,
+    AK_FMI2_GET_NOMINALS_OF_CONTINUOUS_STATES,
+    AK_N_FMI2_FUNCTIONS
+} ak_fmi2_function;
+
+/* The allowed states and interfaces of every FMI 2 function (fmi2_state_machine.c). */
+extern const ak_function_rule FMI2_RULES[AK_N_FMI2_FUNCTIONS];
+/* What the layer tells the runtime of itself (fmi2_layer.c). */
+extern const ak_layer FMI2_LAYER;
+
+/* An FMI 2 instance: the runtime's, and a copy of the master's callbacks (the master's struct
+ * need not outlive fmi2Instantiate). */
+typedef struct {
+    ak_instance base; /* first: an fmi2Component is also an ak_instance */
+    fmi2CallbackFunctions functions;
+} fmi2_instance;
+
+/* Sends a formatted message through the master's logger (there is one), every '%' doubled:
+ * FMI 2.0 lets the master treat the message as a printf format. */
+void fmi2_send(const fmi2CallbackFunctions *functions, const char *instance_name,
+               fmi2Status status, ak_log_category category, const char *message);
+
+/* The state check at the top of every entry point (runtime/instance.h). */
+static inline bool fmi2_allowed(const ak_instance *instance, ak_fmi2_function function) {
+    return ak_call_allowed(instance, &FMI2_RULES[function]);
+}
+
+static inline const char *fmi2_name(ak_fmi2_function function) {
+    return FMI2_RULES[function].name;
+}
+
+/* ak_status and fmi2Status number OK, Warning, Discard and Error alike. */
+_Static_assert((int)AK_STATUS_ERROR == (int)fmi2Error && (int)AK_STATUS_DISCARD == (int)fmi2Discard,
+               "ak_status follows fmi2Status");
+static inline fmi2Status fmi2_status(ak_status status) {
+    return (fmi2Status)status;
+}
+
+#endif

@@ -1,0 +1,127 @@
+/* Model exchange, for both FMI versions. The model's continuous states (ak_model.n_states, 0 for
+ * the algebraic models) are values like every other, at the value references ak_model.state_vrs;
+ * their derivatives come from ak_model.derivatives. No model has event indicators: no event ever
+ * happens, and the event functions only move the time and check their arguments. */
+#include <math.h>
+
+#include "runtime.h"
+
+/* In Initialization Mode the states follow the parameters: brings them up to date; false (the
+ * model logged why) when the parameters give none. */
+static bool states_current(ak_instance *instance, size_t nx) {
+    return nx == 0 || (instance->state & AK_INITIALIZATION_MODE) == 0 ||
+           ak_instance_update(instance, AK_GROUP_MAIN) != AK_STATUS_DISCARD;
+}
+
+/* An array of states, derivatives or nominals: as many as the model has states, given if any. */
+static bool state_array(const ak_instance *instance, const char *function, const char *count_name,
+                        const char *array_name, const void *array, size_t nx) {
+    if (AK_MODEL.n_states == 0 && nx != 0) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s = %zu, but this FMU has no continuous states and no event indicators (%s "
+               "must be 0)",
+               function, count_name, nx, count_name);
+        return false;
+    }
+    if (nx != (size_t)AK_MODEL.n_states) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s = %zu, but this FMU has %d continuous states (numberOfContinuousStates)",
+               function, count_name, nx, AK_MODEL.n_states);
+        return false;
+    }
+    return ak_given(instance, function, nx, count_name, array, array_name);
+}
+
+ak_status ak_no_event_indicators(ak_instance *instance, const char *function,
+                                 const char *count_name, size_t n) {
+    if (n != 0) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s = %zu, but this FMU has %s (%s must be 0)", function, count_name, n,
+               AK_MODEL.n_states == 0 ? "no continuous states and no event indicators"
+                                      : "no event indicators",
+               count_name);
+        return AK_STATUS_ERROR;
+    }
+    return AK_STATUS_OK;
+}
+
+ak_status ak_set_time(ak_instance *instance, const char *function, double time) {
+    if (!isfinite(time)) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: time = %g is not finite", function,
+               time);
+        return AK_STATUS_ERROR;
+    }
+    /* No output depends on the time itself, so the outputs stay valid. The time may go back:
+     * an integrator may evaluate the model at earlier points after rejecting a step. */
+    ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: time = %.17g", function, time);
+    instance->time = time;
+    return AK_STATUS_OK;
+}
+
+ak_status ak_set_continuous_states(ak_instance *instance, const char *function,
+                                   const char *count_name, const char *array_name,
+                                   const double x[], size_t nx) {
+    if (!state_array(instance, function, count_name, array_name, x, nx)) {
+        return AK_STATUS_ERROR;
+    }
+    for (size_t k = 0; k < nx; k++) {
+        if (!isfinite(x[k])) {
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: %s[%zu] = %g (%s) is not finite; no state set", function, array_name, k,
+                   x[k], AK_MODEL.variables[AK_MODEL.state_vrs[k]].name);
+            return AK_STATUS_ERROR;
+        }
+    }
+    for (size_t k = 0; k < nx; k++) {
+        double *value = &instance->data.values[AK_MODEL.state_vrs[k]];
+        if (*value != x[k]) {
+            *value = x[k];
+            ak_instance_inputs_changed(instance);
+        }
+    }
+    return AK_STATUS_OK;
+}
+
+ak_status ak_get_state_derivatives(ak_instance *instance, const char *function,
+                                   const char *count_name, const char *array_name,
+                                   double derivatives[], size_t nx) {
+    if (!state_array(instance, function, count_name, array_name, derivatives, nx)) {
+        return AK_STATUS_ERROR;
+    }
+    if (!states_current(instance, nx)) {
+        return AK_STATUS_DISCARD;
+    }
+    if (nx > 0) {
+        AK_MODEL.derivatives(&instance->data); /* cheap, and exact for the current states */
+    }
+    for (size_t k = 0; k < nx; k++) {
+        derivatives[k] = instance->data.values[AK_MODEL.derivative_vrs[k]];
+    }
+    return AK_STATUS_OK;
+}
+
+ak_status ak_get_continuous_states(ak_instance *instance, const char *function,
+                                   const char *count_name, const char *array_name, double x[],
+                                   size_t nx) {
+    if (!state_array(instance, function, count_name, array_name, x, nx)) {
+        return AK_STATUS_ERROR;
+    }
+    if (!states_current(instance, nx)) {
+        return AK_STATUS_DISCARD;
+    }
+    for (size_t k = 0; k < nx; k++) {
+        x[k] = instance->data.values[AK_MODEL.state_vrs[k]];
+    }
+    return AK_STATUS_OK;
+}
+
+ak_status ak_get_nominals(ak_instance *instance, const char *function, const char *count_name,
+                          const char *array_name, double nominals[], size_t nx) {
+    if (!state_array(instance, function, count_name, array_name, nominals, nx)) {
+        return AK_STATUS_ERROR;
+    }
+    for (size_t k = 0; k < nx; k++) {
+        nominals[k] = AK_MODEL.state_nominals[k];
+    }
+    return AK_STATUS_OK;
+}

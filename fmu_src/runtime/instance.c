@@ -1,0 +1,194 @@
+/* The instance's common part: start, reset, release, logging, the call check, and the lazy
+ * evaluation of the outputs (runtime/instance.h). */
+#include "instance.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+/* Long enough for the longest message (a value reference list is never echoed whole). */
+enum { MESSAGE_CAPACITY = 1024 };
+
+void ak_log(const ak_instance *instance, ak_log_category category, ak_status status,
+            const char *format, ...) {
+    if (!ak_log_on(instance, category)) {
+        return;
+    }
+    char message[MESSAGE_CAPACITY];
+    va_list arguments;
+    va_start(arguments, format);
+    vsnprintf(message, sizeof message, format, arguments);
+    va_end(arguments);
+    instance->layer->send(instance, category, status, message);
+}
+
+void ak_log_without_instance(void (*send)(const void *context, const char *message),
+                             const void *context, const char *format, ...) {
+    char message[MESSAGE_CAPACITY];
+    va_list arguments;
+    va_start(arguments, format);
+    vsnprintf(message, sizeof message, format, arguments);
+    va_end(arguments);
+    send(context, message);
+}
+
+/* The model's messages go out through the instance's logger. */
+static void log_for_model(void *owner, ak_log_category category, ak_status status,
+                          const char *message) {
+    const ak_instance *instance = owner;
+    ak_log(instance, category, status, "%s%s%s", instance->calling ? instance->calling : "",
+           instance->calling ? ": " : "", message);
+}
+
+const char *ak_state_name(const ak_instance *instance, ak_state state) {
+    for (int bit = 0; bit < AK_N_STATES; bit++) {
+        if ((unsigned int)state == 1u << bit) {
+            return instance->layer->state_names[bit];
+        }
+    }
+    return "unknown";
+}
+
+bool ak_call_checked(const ak_instance *instance, const ak_function_rule *rule) {
+    if (instance == NULL) {
+        return false;
+    }
+    if ((rule->interfaces & (unsigned int)instance->interface) == 0) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s", rule->name,
+               instance->layer->other_interface[instance->interface == AK_CO_SIMULATION]);
+        return false;
+    }
+    if ((rule->allowed_states & (unsigned int)instance->state) == 0) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: illegal call in state %s", rule->name,
+               ak_state_name(instance, instance->state));
+        return false;
+    }
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s", rule->name);
+    }
+    return true;
+}
+
+static ak_real_role real_role(const ak_variable *variable) {
+    if (variable == NULL || variable->type != AK_TYPE_REAL) {
+        return AK_REAL_ABSENT;
+    }
+    switch (variable->causality) {
+    case AK_CAUSALITY_INPUT:
+        return AK_REAL_INPUT;
+    case AK_CAUSALITY_PARAMETER:
+        return AK_REAL_PARAMETER;
+    case AK_CAUSALITY_OUTPUT:
+    default:
+        return variable->group == AK_GROUP_DERIVED ? AK_REAL_DERIVED_OUTPUT
+               : variable->group == AK_GROUP_LAZY  ? AK_REAL_LAZY_OUTPUT
+                                                   : AK_REAL_MAIN_OUTPUT;
+    }
+}
+
+/* The log categories of a new or reset instance: errors and warnings are reported unless
+ * switched off; the call trace only when logging was asked for at instantiation. */
+static void reset_log_categories(ak_instance *instance) {
+    for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
+        instance->log_enabled[category] =
+            category != AK_LOG_CALLS || instance->logging_on_at_instantiation;
+    }
+}
+
+/* Every value at its start, no input derivative, the states from the parameters. */
+static void reset_model_data(ak_model_data *data) {
+    for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
+        const ak_variable *variable = ak_variable_of((unsigned int)vr);
+        data->values[vr] = variable != NULL ? variable->start : 0.0;
+    }
+    memset(data->input_derivatives, 0, sizeof data->input_derivatives);
+    data->any_input_derivative = false;
+    if (AK_MODEL.initialize != NULL) {
+        (void)AK_MODEL.initialize(data); /* the start values always give a state */
+    }
+}
+
+void ak_instance_reset(ak_instance *instance) {
+    reset_log_categories(instance);
+    instance->data.log = log_for_model;
+    instance->data.owner = instance;
+    instance->state = AK_INSTANTIATED;
+    instance->time = 0.0;
+    instance->stop_time_defined = false;
+    instance->stop_time = 0.0;
+    instance->last_runs.nvr = 0;
+    instance->calling = NULL;
+    for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
+        instance->real_role[vr] = (unsigned char)real_role(ak_variable_of((unsigned int)vr));
+    }
+    for (int role = 0; role < AK_N_REAL_ROLES; role++) {
+        instance->roles_before[role][0] = 0;
+        for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
+            instance->roles_before[role][vr + 1] = (unsigned char)(instance->roles_before[role][vr] +
+                                                                   (instance->real_role[vr] == role));
+        }
+    }
+    reset_model_data(&instance->data);
+    ak_outputs_reset(&instance->outputs);
+}
+
+bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char *function,
+                       const char *name, ak_interface interface, bool has_logger, bool logging_on) {
+    instance->layer = layer;
+    instance->has_logger = has_logger;
+    instance->logging_on_at_instantiation = logging_on;
+    instance->interface = interface;
+    instance->live_states = NULL;
+    ak_instance_reset(instance);
+    const size_t size = strlen(name) + 1;
+    instance->instance_name = layer->allocate(instance, size);
+    if (instance->instance_name == NULL) {
+        return false;
+    }
+    memcpy(instance->instance_name, name, size);
+    ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: instance \"%s\" created", function, name);
+    return true;
+}
+
+/* Frees the FMU states the importer did not free (fmu_states.c). */
+void ak_free_all_fmu_states(ak_instance *instance);
+
+void ak_instance_release(ak_instance *instance) {
+    ak_free_all_fmu_states(instance);
+    instance->layer->release(instance, instance->instance_name);
+}
+
+ak_status ak_instance_update(ak_instance *instance, ak_group upto) {
+    unsigned int ran;
+    const bool in_initialization =
+        (instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) != 0;
+    const ak_eval_status status =
+        ak_outputs_update(&instance->outputs, &instance->data, in_initialization, upto, &ran);
+    if (ran != 0 && ak_log_on(instance, AK_LOG_CALLS)) {
+        if (ran & AK_RAN_MAIN) {
+            ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "kinematics evaluated (evaluation %lu%s)",
+                   instance->outputs.evaluations,
+                   (ran & AK_RAN_ALL) ? ", with the lazy outputs" : "");
+        }
+        if (ran & AK_RAN_LAZY) {
+            ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "lazy outputs evaluated");
+        }
+        if (ran & AK_RAN_DERIVED) {
+            ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "derived outputs evaluated");
+        }
+    }
+    /* FMI 2.0.4, 2.1.3 and FMI 3: Discard is the answer to "a function is outside of its
+     * domain"; Error would make the instance unusable, which it is not. */
+    return status == AK_EVAL_OK        ? AK_STATUS_OK
+           : status == AK_EVAL_WARNING ? AK_STATUS_WARNING
+                                       : AK_STATUS_DISCARD;
+}
+
+int ak_state_index(const unsigned int *vrs, unsigned int vr) {
+    for (int k = 0; k < AK_MODEL.n_states; k++) {
+        if (vrs[k] == vr) {
+            return k;
+        }
+    }
+    return -1;
+}

@@ -1,0 +1,86 @@
+/* The life cycle both FMI versions share: the debug-logging switch, the experiment, the end of
+ * initialization (runtime/runtime.h). */
+#include <math.h>
+#include <string.h>
+
+#include "runtime.h"
+
+static bool find_category(const char *name, ak_log_category *category) {
+    for (int c = 0; c < AK_N_LOG_CATEGORIES; c++) {
+        if (strcmp(name, AK_LOG_CATEGORY_NAMES[c]) == 0) {
+            *category = (ak_log_category)c;
+            return true;
+        }
+    }
+    return false;
+}
+
+ak_status ak_set_debug_logging(ak_instance *instance, const char *function, bool on, size_t n,
+                               const char *const categories[]) {
+    if (!ak_given(instance, function, n, "nCategories", categories, "categories")) {
+        return AK_STATUS_ERROR;
+    }
+    ak_log_category found;
+    for (size_t i = 0; i < n; i++) { /* every name checked before anything changes */
+        if (categories[i] == NULL || !find_category(categories[i], &found)) {
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: categories[%zu] = \"%s\" is not a log category of this FMU "
+                   "(" AK_LOG_CATEGORY_LIST ")",
+                   function, i, categories[i] ? categories[i] : "(null)");
+            return AK_STATUS_ERROR;
+        }
+    }
+    for (int category = 0; n == 0 && category < AK_N_LOG_CATEGORIES; category++) {
+        instance->log_enabled[category] = on;
+    }
+    for (size_t i = 0; i < n; i++) {
+        find_category(categories[i], &found);
+        instance->log_enabled[found] = on;
+    }
+    return AK_STATUS_OK;
+}
+
+ak_status ak_setup_experiment(ak_instance *instance, const char *function, bool tolerance_defined,
+                              double tolerance, double start_time, bool stop_time_defined,
+                              double stop_time) {
+    if (tolerance_defined && !(isfinite(tolerance) && tolerance >= 0.0)) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: tolerance = %g must be finite and >= 0", function, tolerance);
+        return AK_STATUS_ERROR;
+    }
+    if (!isfinite(start_time)) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: startTime = %g is not finite",
+               function, start_time);
+        return AK_STATUS_ERROR;
+    }
+    if (stop_time_defined && !(isfinite(stop_time) && stop_time >= start_time)) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: stopTime = %.17g must be finite and >= startTime = %.17g", function,
+               stop_time, start_time);
+        return AK_STATUS_ERROR;
+    }
+    /* No model integrates with an error control (co-simulation steps are closed-form, model
+     * exchange is the importer's): the tolerance has nothing to control. */
+    instance->time = start_time;
+    instance->stop_time_defined = stop_time_defined;
+    instance->stop_time = stop_time;
+    return AK_STATUS_OK;
+}
+
+ak_status ak_exit_initialization_mode(ak_instance *instance, const char *function) {
+    if (AK_MODEL.initialize != NULL) {
+        if (AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: the parameters give no initial state (see the message before); the "
+                   "instance stays in %s",
+                   function, ak_state_name(instance, AK_INITIALIZATION_MODE));
+            return AK_STATUS_ERROR;
+        }
+        ak_instance_inputs_changed(instance);
+    }
+    /* The outputs at the initial inputs; a failed evaluation is reported by the reads. */
+    (void)ak_instance_update(instance, AK_GROUP_MAIN);
+    instance->state =
+        instance->interface == AK_MODEL_EXCHANGE ? AK_EVENT_MODE : AK_STEP_MODE;
+    return AK_STATUS_OK;
+}

@@ -1,0 +1,128 @@
+/* What the runtime does for an FMI layer, FMI-independent: each function takes the calling FMI
+ * function's name for its messages, does what the standards share and returns an ak_status,
+ * which the layer maps to its status type. The state checks are the layer's (ak_call_allowed
+ * with its table) and come first. Every function checks all of its arguments before it changes
+ * anything: a refused call changes nothing. */
+#ifndef ANGULAR_KINEMATICS_RUNTIME_H
+#define ANGULAR_KINEMATICS_RUNTIME_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "instance.h"
+
+/* --- life cycle (lifecycle.c) ------------------------------------------------------------------ */
+
+/* fmiXSetDebugLogging: switches the n named categories (all when n is 0) after checking every
+ * name, so that a bad call changes nothing. */
+ak_status ak_set_debug_logging(ak_instance *instance, const char *function, bool on, size_t n,
+                               const char *const categories[]);
+/* The experiment: tolerance (if defined) finite and >= 0, start time finite, stop time (if
+ * defined) finite and not before the start. */
+ak_status ak_setup_experiment(ak_instance *instance, const char *function, bool tolerance_defined,
+                              double tolerance, double start_time, bool stop_time_defined,
+                              double stop_time);
+/* The states from the parameters, then the outputs at the initial inputs; Event Mode (model
+ * exchange) or Step Mode (co-simulation). A refusal of the parameters leaves the instance in
+ * Initialization Mode, so that the importer can correct them and call again. */
+ak_status ak_exit_initialization_mode(ak_instance *instance, const char *function);
+
+/* --- FMU states (fmu_states.c) ----------------------------------------------------------------- */
+
+/* *state: a state of this instance to overwrite, or NULL for a new one. */
+ak_status ak_get_fmu_state(ak_instance *instance, const char *function, void **state);
+ak_status ak_set_fmu_state(ak_instance *instance, const char *function, void *state);
+ak_status ak_free_fmu_state(ak_instance *instance, const char *function, void **state);
+ak_status ak_serialized_fmu_state_size(ak_instance *instance, const char *function, void *state,
+                                       size_t *size);
+ak_status ak_serialize_fmu_state(ak_instance *instance, const char *function, void *state,
+                                 unsigned char bytes[], size_t size);
+ak_status ak_deserialize_fmu_state(ak_instance *instance, const char *function,
+                                   const unsigned char bytes[], size_t size, void **state);
+
+/* --- co-simulation (stepping.c) ---------------------------------------------------------------- */
+
+/* A step from t by h (checked: finite, h > 0, t the current time, not past the stop time):
+ * the model's states advanced, the inputs moved along their derivatives, the time moved. A model
+ * with states or evaluate_in_step is evaluated at the end; when that fails the step is not taken
+ * (DISCARD, logged; the instance in the layer's step_discarded_state, every value as before). */
+ak_status ak_do_step(ak_instance *instance, const char *function, double t, double h);
+/* Input derivatives (FMI 2 only): of the inputs vr[i], order[i] 1 or 2, finite. */
+ak_status ak_set_input_derivatives(ak_instance *instance, const char *function,
+                                   const unsigned int vr[], size_t nvr, const int order[],
+                                   const double value[]);
+
+/* Recomputes data.any_input_derivative after the derivatives changed. */
+void ak_input_derivatives_changed(ak_instance *instance);
+/* A set of an input forgets its derivatives: the importer restated the value at a new point
+ * without a slope, so the input is held from there (docs/capabilities.md). */
+void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
+
+/* --- model exchange (continuous.c) ------------------------------------------------------------- */
+
+ak_status ak_set_time(ak_instance *instance, const char *function, double time);
+/* Arrays of the continuous states: count_name/array_name are the layer's argument names. */
+ak_status ak_set_continuous_states(ak_instance *instance, const char *function,
+                                   const char *count_name, const char *array_name,
+                                   const double x[], size_t nx);
+ak_status ak_get_continuous_states(ak_instance *instance, const char *function,
+                                   const char *count_name, const char *array_name, double x[],
+                                   size_t nx);
+ak_status ak_get_state_derivatives(ak_instance *instance, const char *function,
+                                   const char *count_name, const char *array_name,
+                                   double derivatives[], size_t nx);
+ak_status ak_get_nominals(ak_instance *instance, const char *function, const char *count_name,
+                          const char *array_name, double nominals[], size_t nx);
+/* The models have no event indicators: n must be 0. */
+ak_status ak_no_event_indicators(ak_instance *instance, const char *function,
+                                 const char *count_name, size_t n);
+
+/* --- values (values.c) ------------------------------------------------------------------------- */
+
+/* NULL is fine only when there is nothing to read or write. */
+bool ak_given(const ak_instance *instance, const char *function, size_t n, const char *count_name,
+              const void *pointer, const char *pointer_name);
+/* A pointer argument that must not be NULL: logs "<function>: <name> is NULL" when it is. */
+bool ak_not_null(const ak_instance *instance, const char *function, const void *pointer,
+                 const char *name);
+/* Real gets and sets of scalar value references (FMI 2; the FMI 3 layer expands
+ * its arrays into them where it has no faster path). */
+ak_status ak_get_reals(ak_instance *instance, const char *function, const unsigned int vr[],
+                       size_t nvr, double value[]);
+ak_status ak_set_reals(ak_instance *instance, const char *function, const unsigned int vr[],
+                       size_t nvr, const double value[]);
+/* The variable of a scalar value reference, of the given type (Real or Integer), or NULL after
+ * logging why not. */
+const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
+                                       unsigned int vr, size_t index, ak_type type);
+/* The usual set of every communication point: n finite values of consecutive inputs from first
+ * (first + n <= n_inputs), untraced, no input derivative to forget. False (nothing stored) when
+ * it is not that: the caller takes its checked path. */
+bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n);
+/* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
+bool ak_parameter_settable(const ak_instance *instance, const char *function, size_t index,
+                           const ak_variable *variable, double value);
+/* Stores a checked value, traced in logCalls; outputs go stale only when a bit changed. */
+void ak_store(ak_instance *instance, const char *function, unsigned int vr, double value);
+
+/* --- derivatives (derivatives.c) --------------------------------------------------------------- */
+
+/* The refusal of a function behind a capability flag the model does not claim. */
+ak_status ak_not_provided(const ak_instance *instance, const char *function, const char *flag);
+/* The first derivatives of the checked outputs vr (scalars), after bringing the outputs up to
+ * date. */
+ak_status ak_output_derivatives(ak_instance *instance, const char *function,
+                                const unsigned int vr[], size_t nvr, double value[]);
+/* sensitivity = J seed (directional) or J^T seed (adjoint: sensitivity accumulated, zeroed by
+ * the caller), J the rows of the checked unknowns (scalars: outputs or state derivatives) and the
+ * columns of the checked knowns (inputs or states). */
+ak_status ak_derivative(ak_instance *instance, const unsigned int unknowns[], size_t n_unknowns,
+                        const unsigned int knowns[], size_t n_knowns, const double seed[],
+                        double sensitivity[], bool adjoint);
+/* A checked unknown or known: of the given causality or (also, when not NULL) one of the states
+ * or their derivatives; logs naming list_name[index] when not. */
+bool ak_derivative_variable(const ak_instance *instance, const char *function,
+                            const char *list_name, size_t index, unsigned int vr,
+                            ak_causality causality, const unsigned int *also);
+
+#endif
