@@ -22,7 +22,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "AngularKinematics_variables.h" /* AK_GUID, generated */
+#include "AngularKinematics_variables.h" /* KIN_GUID, generated */
 #include "bench_inputs.h"
 #include "bench_timing.h"
 #include "fmi2FunctionTypes.h"
@@ -70,7 +70,7 @@ static void fmi2_log(fmi2ComponentEnvironment e, fmi2String n, fmi2Status s, fmi
 static double time_fmi2(void *library, long n) {
     fmi2CallbackFunctions callbacks = {fmi2_log, calloc, free, NULL, NULL};
     fmi2Component c = FUNCTION(fmi2InstantiateTYPE, library, "fmi2Instantiate")(
-        "bench", fmi2CoSimulation, AK_GUID, "", &callbacks, fmi2False, fmi2False);
+        "bench", fmi2CoSimulation, KIN_GUID, "", &callbacks, fmi2False, fmi2False);
     fmi2SetRealTYPE *set = FUNCTION(fmi2SetRealTYPE, library, "fmi2SetReal");
     fmi2GetRealTYPE *get = FUNCTION(fmi2GetRealTYPE, library, "fmi2GetReal");
     fmi2DoStepTYPE *step_fn = FUNCTION(fmi2DoStepTYPE, library, "fmi2DoStep");
@@ -106,7 +106,7 @@ static void fmi3_log(fmi3InstanceEnvironment e, fmi3Status s, fmi3String c, fmi3
 
 static double time_fmi3(void *library, long n) {
     fmi3Instance c = FUNCTION(fmi3InstantiateCoSimulationTYPE, library, "fmi3InstantiateCoSimulation")(
-        "bench", AK_GUID, NULL, fmi3False, fmi3False, fmi3False, fmi3False, NULL, 0, NULL, fmi3_log, NULL);
+        "bench", KIN_GUID, NULL, fmi3False, fmi3False, fmi3False, fmi3False, NULL, 0, NULL, fmi3_log, NULL);
     fmi3SetFloat64TYPE *set = FUNCTION(fmi3SetFloat64TYPE, library, "fmi3SetFloat64");
     fmi3GetFloat64TYPE *get = FUNCTION(fmi3GetFloat64TYPE, library, "fmi3GetFloat64");
     fmi3DoStepTYPE *step_fn = FUNCTION(fmi3DoStepTYPE, library, "fmi3DoStep");

@@ -51,8 +51,8 @@ static const fmi2ValueReference OUTPUT_VRS_REVERSED[N_OUTPUTS] = {20, 19, 18, 17
                                                                   14, 13, 12, 11, 10, 9};
 /* Every output (what fmpy's simulate_fmu records by default), filled in by main; and one output
  * of the lazy group, R[1,1], which makes the FMU compute the whole lazy group. */
-static fmi2ValueReference ALL_OUTPUT_VRS[AK_N_OUTPUTS];
-static const fmi2ValueReference ONE_LAZY_VR[1] = {AK_VR_R};
+static fmi2ValueReference ALL_OUTPUT_VRS[KIN_N_OUTPUTS];
+static const fmi2ValueReference ONE_LAZY_VR[1] = {KIN_VR_R};
 static const double STEP_SIZE = 1e-3;
 
 /* ---- the FMU, loaded as a master loads it ------------------------------------------------------ */
@@ -162,7 +162,7 @@ static void start_instance(fmu_api *api, instance *fmu) {
     fmu->api = api;
     fmu->reader = (log_reader){0, 0};
     fmu->functions = (fmi2CallbackFunctions){read_log, count_and_allocate, free, NULL, &fmu->reader};
-    fmu->component = api->instantiate("bench", fmi2CoSimulation, AK_GUID, NULL, &fmu->functions,
+    fmu->component = api->instantiate("bench", fmi2CoSimulation, KIN_GUID, NULL, &fmu->functions,
                                       fmi2False, fmi2False);
     if (fmu->component == NULL) {
         fail("fmi2Instantiate");
@@ -242,7 +242,7 @@ static double time_cycle(fmu_api *api, const fmi2ValueReference *vrs, int n_vrs,
     instance fmu;
     start_instance(api, &fmu);
     const unsigned long evaluations_before = evaluations(&fmu);
-    double outputs[AK_N_OUTPUTS];
+    double outputs[KIN_N_OUTPUTS];
     double sum = 0.0, t = fmu.time;
     int k = 0;
     unsigned int statuses = fmi2OK;
@@ -469,7 +469,7 @@ static void run_scaling(fmu_api *api, const options *o) {
            "Each is compared with the same bare core, ak_general_angular_kinematics for body123 (the\n"
            "12 omega/alpha outputs); the four loops run alternately in each repeat; ns are medians of\n"
            "the repeats, each ratio the median of the per-repeat ratios:\n\n",
-           (int)AK_N_OUTPUTS);
+           (int)KIN_N_OUTPUTS);
     printf("| steps per run | repeats | core ns/step | cycle ns/step | cycle / core | "
            "all ns | all / core | one lazy ns | one lazy / core | "
            "max RSS KiB | FMU allocations per run |\n");
@@ -492,7 +492,7 @@ static void run_scaling(fmu_api *api, const options *o) {
             const unsigned long before = allocations;
             cycle[r] = time_cycle(api, OUTPUT_VRS, N_OUTPUTS, n);
             allocations_per_run = allocations - before;
-            all[r] = time_cycle(api, ALL_OUTPUT_VRS, AK_N_OUTPUTS, n);
+            all[r] = time_cycle(api, ALL_OUTPUT_VRS, KIN_N_OUTPUTS, n);
             lazy[r] = time_cycle(api, ONE_LAZY_VR, 1, n);
             ratios[r] = cycle[r] / core[r];
             all_ratios[r] = all[r] / core[r];
@@ -561,8 +561,8 @@ int main(int argc, char **argv) {
     }
     fill_input_table();
     int n_outputs = 0;
-    for (int vr = 0; vr < AK_N_VALUE_REFERENCES; vr++) {
-        if (AK_VARIABLES[vr].name != NULL && AK_VARIABLES[vr].causality == AK_CAUSALITY_OUTPUT) {
+    for (int vr = 0; vr < KIN_N_VALUE_REFERENCES; vr++) {
+        if (KIN_VARIABLES[vr].name != NULL && KIN_VARIABLES[vr].causality == AK_CAUSALITY_OUTPUT) {
             ALL_OUTPUT_VRS[n_outputs++] = (fmi2ValueReference)vr;
         }
     }
@@ -574,7 +574,7 @@ int main(int argc, char **argv) {
         } else if (strcmp(o.only, "cycle") == 0) {
             time_cycle(&api, OUTPUT_VRS, N_OUTPUTS, o.sizes[0]);
         } else if (strcmp(o.only, "all") == 0) {
-            time_cycle(&api, ALL_OUTPUT_VRS, AK_N_OUTPUTS, o.sizes[0]);
+            time_cycle(&api, ALL_OUTPUT_VRS, KIN_N_OUTPUTS, o.sizes[0]);
         } else if (strcmp(o.only, "lazy") == 0) {
             time_cycle(&api, ONE_LAZY_VR, 1, o.sizes[0]);
         } else if (strcmp(o.only, "get") == 0) {

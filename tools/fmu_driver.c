@@ -43,7 +43,7 @@ typedef struct {
 } driven_model;
 
 static const driven_model MODELS[] = {
-    {"AngularKinematics", AK_GUID, AK_VARIABLES, AK_N_VALUE_REFERENCES, AK_N_INPUTS},
+    {"AngularKinematics", KIN_GUID, KIN_VARIABLES, KIN_N_VALUE_REFERENCES, KIN_N_INPUTS},
     {"EulerRates", ER_GUID, ER_VARIABLES, ER_N_VALUE_REFERENCES, ER_N_INPUTS},
     {"AttitudePropagator", AP_GUID, AP_VARIABLES, AP_N_VALUE_REFERENCES, AP_N_INPUTS},
 };

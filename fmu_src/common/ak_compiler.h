@@ -12,6 +12,14 @@
 #define AK_NOINLINE
 #endif
 
+/* The reverse, for a small check that the usual path of every communication point runs: inlined
+ * into each caller even where the compiler would rather share one copy. */
+#if defined(__GNUC__)
+#define AK_ALWAYS_INLINE __attribute__((always_inline)) inline
+#else
+#define AK_ALWAYS_INLINE inline
+#endif
+
 /* printf-style arguments, checked by the compiler. mingw-w64 builds use its C99 printf
  * (__USE_MINGW_ANSI_STDIO=1, set by CMakeLists.txt), not msvcrt's: %zu is fine there too. */
 #if defined(__MINGW32__)

@@ -42,6 +42,8 @@ const ak_layer FMI2_LAYER = {
                         "a model-exchange function, but this instance was created for "
                         "co-simulation (fmi2CoSimulation)"},
     .vr_name = "vr",
+    .vr_count_name = "nvr",
+    .values_name = "value",
     .state_setter_note = " and a continuous state (fmi2SetContinuousStates sets states in model "
                          "exchange)",
     .step_discarded_state = AK_STEP_FAILED,

@@ -11,22 +11,12 @@ static bool arrays_given(const ak_instance *instance, ak_fmi2_function function,
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        fmi2Real value[]) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_GET_REAL) ||
-        !arrays_given(instance, AK_FMI2_GET_REAL, nvr, vr, value)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_get_reals(instance, fmi2_name(AK_FMI2_GET_REAL), vr, nvr, value));
+    return fmi2_status(ak_get_reals(c, &FMI2_RULES[AK_FMI2_GET_REAL], vr, nvr, value));
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        const fmi2Real value[]) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_SET_REAL) ||
-        !arrays_given(instance, AK_FMI2_SET_REAL, nvr, vr, value)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_set_reals(instance, fmi2_name(AK_FMI2_SET_REAL), vr, nvr, value));
+    return fmi2_status(ak_set_reals(c, &FMI2_RULES[AK_FMI2_SET_REAL], vr, nvr, value));
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,

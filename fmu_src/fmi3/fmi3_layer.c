@@ -30,6 +30,8 @@ const ak_layer FMI3_LAYER = {
                         "not available to this instance, made by fmi3InstantiateCoSimulation "
                         "without Event Mode"},
     .vr_name = "valueReferences",
+    .vr_count_name = "nValueReferences",
+    .values_name = "values",
     .state_setter_note = " and a continuous state (fmi3SetContinuousStates sets states in model "
                          "exchange)",
     /* A discarded step leaves the instance where it was: FMI 3 has no StepFailed state. */

@@ -310,7 +310,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     bool one_run;
     if (usual_set(vr, nvr, nValues, &one_run) && !ak_log_on(instance, AK_LOG_CALLS)) {
         if (one_run) { /* one check-and-copy of consecutive values */
-            if (ak_store_inputs(instance, vr[0], values, nValues)) {
+            if (ak_store_inputs(instance, vr[0], values, nValues, 3)) {
                 return fmi3OK;
             }
         } else if (all_finite(values, nValues)) {

@@ -126,7 +126,11 @@ static ak_fmu_state *state_to_fill(ak_instance *instance, const char *function, 
     return s;
 }
 
-ak_status ak_get_fmu_state(ak_instance *instance, const char *function, void **state) {
+ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *function = call->name;
     if (!ak_not_null(instance, function, state, instance->layer->state_format.kind_argument)) {
         return AK_STATUS_ERROR;
     }
@@ -139,7 +143,11 @@ ak_status ak_get_fmu_state(ak_instance *instance, const char *function, void **s
     return AK_STATUS_OK;
 }
 
-ak_status ak_set_fmu_state(ak_instance *instance, const char *function, void *state) {
+ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *function = call->name;
     const ak_fmu_state *s = known_state(instance, function, state);
     ak_state_content content;
     if (s == NULL || !decode(instance, function, s->bytes, state_size(instance), &content)) {
@@ -162,7 +170,11 @@ ak_status ak_set_fmu_state(ak_instance *instance, const char *function, void *st
     return AK_STATUS_OK;
 }
 
-ak_status ak_free_fmu_state(ak_instance *instance, const char *function, void **state) {
+ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *function = call->name;
     if (!ak_not_null(instance, function, state, instance->layer->state_format.kind_argument)) {
         return AK_STATUS_ERROR;
     }
@@ -183,8 +195,12 @@ ak_status ak_free_fmu_state(ak_instance *instance, const char *function, void **
     return AK_STATUS_OK;
 }
 
-ak_status ak_serialized_fmu_state_size(ak_instance *instance, const char *function, void *state,
-                                       size_t *size) {
+ak_status ak_serialized_fmu_state_size(ak_instance *instance, const ak_function_rule *call,
+                                       void *state, size_t *size) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *function = call->name;
     if (!ak_not_null(instance, function, size, "size") ||
         known_state(instance, function, state) == NULL) {
         return AK_STATUS_ERROR;
@@ -193,8 +209,12 @@ ak_status ak_serialized_fmu_state_size(ak_instance *instance, const char *functi
     return AK_STATUS_OK;
 }
 
-ak_status ak_serialize_fmu_state(ak_instance *instance, const char *function, void *state,
+ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state,
                                  unsigned char bytes[], size_t size) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *function = call->name;
     const ak_fmu_state *s = known_state(instance, function, state);
     if (s == NULL || !ak_not_null(instance, function, bytes, "serializedState")) {
         return AK_STATUS_ERROR;
@@ -209,8 +229,12 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const char *function, vo
     return AK_STATUS_OK;
 }
 
-ak_status ak_deserialize_fmu_state(ak_instance *instance, const char *function,
+ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
                                    const unsigned char bytes[], size_t size, void **state) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *function = call->name;
     ak_state_content content;
     if (!ak_not_null(instance, function, bytes, "serializedState") ||
         !ak_not_null(instance, function, state, instance->layer->state_format.kind_argument) ||

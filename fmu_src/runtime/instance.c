@@ -91,7 +91,8 @@ static ak_real_role real_role(const ak_variable *variable) {
 static void reset_log_categories(ak_instance *instance) {
     for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
         instance->log_enabled[category] =
-            category != AK_LOG_CALLS || instance->logging_on_at_instantiation;
+            instance->has_logger &&
+            (category != AK_LOG_CALLS || instance->logging_on_at_instantiation);
     }
 }
 
@@ -179,9 +180,11 @@ ak_status ak_instance_update(ak_instance *instance, ak_group upto) {
     }
     /* FMI 2.0.4, 2.1.3 and FMI 3: Discard is the answer to "a function is outside of its
      * domain"; Error would make the instance unusable, which it is not. */
-    return status == AK_EVAL_OK        ? AK_STATUS_OK
-           : status == AK_EVAL_WARNING ? AK_STATUS_WARNING
-                                       : AK_STATUS_DISCARD;
+    _Static_assert((int)AK_EVAL_OK == (int)AK_STATUS_OK &&
+                       (int)AK_EVAL_WARNING == (int)AK_STATUS_WARNING &&
+                       (int)AK_EVAL_FAILED == (int)AK_STATUS_DISCARD,
+                   "an evaluation's status is the status of a read");
+    return (ak_status)status;
 }
 
 int ak_state_index(const unsigned int *vrs, unsigned int vr) {

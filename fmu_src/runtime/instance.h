@@ -53,8 +53,11 @@ typedef struct {
     /* Why a function of the other interface is refused, by the instance's interface
      * ([0] model exchange, [1] co-simulation): follows "<function>: ". */
     const char *other_interface[2];
-    /* The name of a value-reference argument in messages: "vr", "valueReferences". */
+    /* The names of the value-reference array, its count and the value array in messages: "vr",
+     * "nvr", "value"; "valueReferences", "nValueReferences", "values". */
     const char *vr_name;
+    const char *vr_count_name;
+    const char *values_name;
     /* Added to the refusal of a set of a continuous state: where states are set. */
     const char *state_setter_note;
     /* The state an instance is in after a discarded step (FMI 2 StepFailed; FMI 3 stays in Step
@@ -130,10 +133,11 @@ struct ak_instance_s {
     ak_get_runs last_runs;
 };
 
-/* True when a message of this category reaches the importer. Inline: the calls of every
- * communication point ask it before ak_log, and pay a load and a branch with the trace off. */
+/* True when a message of this category reaches the importer (a category is never on without a
+ * logger). Inline: the calls of every communication point ask it before ak_log, and pay a load
+ * and a branch with the trace off. */
 static inline bool ak_log_on(const ak_instance *instance, ak_log_category category) {
-    return instance->log_enabled[category] && instance->has_logger;
+    return instance->log_enabled[category];
 }
 
 /* Formats a message and sends it through the layer, if the category is on. */
@@ -155,8 +159,11 @@ bool ak_call_checked(const ak_instance *instance, const ak_function_rule *rule);
  * logged then), a function of the other interface or a state not allowed (both logged). Inline,
  * so that a legal call with the trace off costs two mask tests and no call. */
 static inline bool ak_call_allowed(const ak_instance *instance, const ak_function_rule *rule) {
+    /* A function of both interfaces (most) needs no interface test: with the table a constant,
+     * the compiler drops it. */
+    const bool both = rule->interfaces == (AK_MODEL_EXCHANGE | AK_CO_SIMULATION);
     if (instance != NULL && (rule->allowed_states & (unsigned int)instance->state) != 0 &&
-        (rule->interfaces & (unsigned int)instance->interface) != 0 &&
+        (both || (rule->interfaces & (unsigned int)instance->interface) != 0) &&
         !ak_log_on(instance, AK_LOG_CALLS)) {
         return true;
     }

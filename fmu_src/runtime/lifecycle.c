@@ -30,6 +30,7 @@ ak_status ak_set_debug_logging(ak_instance *instance, const char *function, bool
             return AK_STATUS_ERROR;
         }
     }
+    on = on && instance->has_logger; /* nothing reaches an importer that gave no logger */
     for (int category = 0; n == 0 && category < AK_N_LOG_CATEGORIES; category++) {
         instance->log_enabled[category] = on;
     }

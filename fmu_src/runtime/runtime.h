@@ -29,15 +29,16 @@ ak_status ak_exit_initialization_mode(ak_instance *instance, const char *functio
 
 /* --- FMU states (fmu_states.c) ----------------------------------------------------------------- */
 
+/* Each checks the call against the layer's table entry first (ak_call_allowed). */
 /* *state: a state of this instance to overwrite, or NULL for a new one. */
-ak_status ak_get_fmu_state(ak_instance *instance, const char *function, void **state);
-ak_status ak_set_fmu_state(ak_instance *instance, const char *function, void *state);
-ak_status ak_free_fmu_state(ak_instance *instance, const char *function, void **state);
-ak_status ak_serialized_fmu_state_size(ak_instance *instance, const char *function, void *state,
-                                       size_t *size);
-ak_status ak_serialize_fmu_state(ak_instance *instance, const char *function, void *state,
+ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
+ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state);
+ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
+ak_status ak_serialized_fmu_state_size(ak_instance *instance, const ak_function_rule *call,
+                                       void *state, size_t *size);
+ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state,
                                  unsigned char bytes[], size_t size);
-ak_status ak_deserialize_fmu_state(ak_instance *instance, const char *function,
+ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
                                    const unsigned char bytes[], size_t size, void **state);
 
 /* --- co-simulation (stepping.c) ---------------------------------------------------------------- */
@@ -79,26 +80,37 @@ ak_status ak_no_event_indicators(ak_instance *instance, const char *function,
 
 /* --- values (values.c) ------------------------------------------------------------------------- */
 
-/* NULL is fine only when there is nothing to read or write. */
-bool ak_given(const ak_instance *instance, const char *function, size_t n, const char *count_name,
-              const void *pointer, const char *pointer_name);
+/* Logs "<function>: <pointer_name> is NULL with <count_name> = <n>"; false. */
+bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
+                    const char *count_name, const char *pointer_name);
+/* NULL is fine only when there is nothing to read or write. Inline: every get and set asks it. */
+static inline bool ak_given(const ak_instance *instance, const char *function, size_t n,
+                            const char *count_name, const void *pointer,
+                            const char *pointer_name) {
+    return n == 0 || pointer != NULL ||
+           ak_refuse_null(instance, function, n, count_name, pointer_name);
+}
 /* A pointer argument that must not be NULL: logs "<function>: <name> is NULL" when it is. */
 bool ak_not_null(const ak_instance *instance, const char *function, const void *pointer,
                  const char *name);
-/* Real gets and sets of scalar value references (FMI 2; the FMI 3 layer expands
+/* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
+ * its arrays first (FMI 2; the FMI 3 layer expands
  * its arrays into them where it has no faster path). */
-ak_status ak_get_reals(ak_instance *instance, const char *function, const unsigned int vr[],
-                       size_t nvr, double value[]);
-ak_status ak_set_reals(ak_instance *instance, const char *function, const unsigned int vr[],
-                       size_t nvr, const double value[]);
+ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
+                       const unsigned int vr[], size_t nvr, double value[]);
+ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
+                       const unsigned int vr[], size_t nvr, const double value[]);
 /* The variable of a scalar value reference, of the given type (Real or Integer), or NULL after
  * logging why not. */
 const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
                                        unsigned int vr, size_t index, ak_type type);
 /* The usual set of every communication point: n finite values of consecutive inputs from first
- * (first + n <= n_inputs), untraced, no input derivative to forget. False (nothing stored) when
- * it is not that: the caller takes its checked path. */
-bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n);
+ * (first + n <= n_inputs), untraced, no input derivative to forget; usual_n, the count the
+ * layer's importers usually set (every input of FMI 2, one vector of 3 of FMI 3), is copied
+ * unrolled. False (nothing stored) when a value is not finite: the caller takes its checked
+ * path. */
+bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
+                     size_t usual_n);
 /* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
 bool ak_parameter_settable(const ak_instance *instance, const char *function, size_t index,
                            const ak_variable *variable, double value);

@@ -155,7 +155,8 @@ ak_status ak_do_step(ak_instance *instance, const char *function, double t, doub
     if (AK_MODEL.evaluate_in_step || AK_MODEL.step != NULL) {
         return step_evaluating(instance, function, t, h);
     }
-    if (!advance_inputs(instance, function, h)) {
+    /* Without input derivatives the inputs are held: no call. */
+    if (instance->data.any_input_derivative && !advance_inputs(instance, function, h)) {
         return AK_STATUS_ERROR;
     }
     if (ak_log_on(instance, AK_LOG_CALLS)) {

@@ -10,14 +10,11 @@
 #include "ak_bytes.h"
 #include "runtime.h"
 
-bool ak_given(const ak_instance *instance, const char *function, size_t n, const char *count_name,
-              const void *pointer, const char *pointer_name) {
-    if (n > 0 && pointer == NULL) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
-               pointer_name, count_name, n);
-        return false;
-    }
-    return true;
+bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
+                    const char *count_name, const char *pointer_name) {
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
+           pointer_name, count_name, n);
+    return false;
 }
 
 bool ak_not_null(const ak_instance *instance, const char *function, const void *pointer,
@@ -161,8 +158,31 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
     }
 }
 
-ak_status ak_get_reals(ak_instance *instance, const char *function, const unsigned int vr[],
-                       size_t nvr, double value[]) {
+/* Out of line: the refusal of a NULL vr (or else value) with nvr > 0, in the layer's words. */
+AK_NOINLINE static bool refuse_null_array(const ak_instance *instance,
+                                          const ak_function_rule *call, size_t nvr,
+                                          bool vr_missing) {
+    const ak_layer *layer = instance->layer;
+    return ak_refuse_null(instance, call->name, nvr, layer->vr_count_name,
+                          vr_missing ? layer->vr_name : layer->values_name);
+}
+
+/* The call allowed, and vr and value given when there is anything to read or write. */
+static AK_ALWAYS_INLINE bool call_and_arrays_valid(const ak_instance *instance,
+                                                   const ak_function_rule *call,
+                                                   const unsigned int vr[], size_t nvr,
+                                                   const void *value) {
+    return ak_call_allowed(instance, call) &&
+           (nvr == 0 || (vr != NULL && value != NULL) ||
+            refuse_null_array(instance, call, nvr, vr == NULL));
+}
+
+ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
+                       const unsigned int vr[], size_t nvr, double value[]) {
+    if (!call_and_arrays_valid(instance, call, vr, nvr, value)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     /* One bit per role read: the highest decides what must be brought up to date (nothing for
      * inputs and parameters, the main group for its outputs, both groups for a lazy output).
      * Consecutive value references are the usual get: their roles come from the run's ends and
@@ -204,14 +224,13 @@ ak_status ak_get_reals(ak_instance *instance, const char *function, const unsign
     return status;
 }
 
-bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n) {
-    /* The usual count (every input of FMI 2, one vector of 3 of FMI 3) as a constant: the
-     * compiler unrolls the check and the copy instead of calling memcpy. */
+bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
+                     size_t usual_n) {
+    /* The caller's usual count as a constant: the compiler unrolls the check and the copy
+     * instead of calling memcpy. */
     double *target = &instance->data.values[first];
-    const ak_store_result stored =
-        n == (size_t)AK_MODEL.n_inputs ? ak_store_if_finite(target, value, (size_t)AK_MODEL.n_inputs)
-        : n == 3                       ? ak_store_if_finite(target, value, 3)
-                                       : ak_store_if_finite(target, value, n);
+    const ak_store_result stored = n == usual_n ? ak_store_if_finite(target, value, usual_n)
+                                                : ak_store_if_finite(target, value, n);
     if (stored == AK_STORE_CHANGED) {
         ak_instance_inputs_changed(instance);
     }
@@ -268,15 +287,19 @@ static bool check_each_real(const ak_instance *instance, const char *function,
     return true;
 }
 
-ak_status ak_set_reals(ak_instance *instance, const char *function, const unsigned int vr[],
-                       size_t nvr, const double value[]) {
+ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
+                       const unsigned int vr[], size_t nvr, const double value[]) {
+    if (!call_and_arrays_valid(instance, call, vr, nvr, value)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     /* Untraced, and no input derivative to forget: a usual set stores values, nothing more. */
     const bool trace = ak_log_on(instance, AK_LOG_CALLS);
     const bool plain_store = !trace && !instance->data.any_input_derivative;
     /* The usual set of an importer: the first nvr inputs in value-reference order. */
     if (plain_store && nvr > 0 && nvr <= (size_t)AK_MODEL.n_inputs &&
         memcmp(vr, EVERY_VALUE_REFERENCE, nvr * sizeof vr[0]) == 0 &&
-        ak_store_inputs(instance, 0, value, nvr)) {
+        ak_store_inputs(instance, 0, value, nvr, (size_t)AK_MODEL.n_inputs)) {
         return AK_STATUS_OK;
     }
     const bool usual = only_finite_inputs(vr, nvr, value);

@@ -21,7 +21,7 @@ const ak_test_failing_step AK_TEST_FAILING_STEP = {0, {0}, {0}};
 const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- values ------------------------------------------------------------------------------ */
     {STEP_COMPLETE, "fmi2SetReal(c, {0, @PAST@}, 2, {7, 7})", AK_OP_SET_REAL,
-     {.vr = (const fmi2ValueReference[]){0, AK_N_VALUE_REFERENCES}, .nvr = 2, .values = (fmi2Real[]){7.0, 7.0}},
+     {.vr = (const fmi2ValueReference[]){0, KIN_N_VALUE_REFERENCES}, .nvr = 2, .values = (fmi2Real[]){7.0, 7.0}},
      fmi2Error,
      "fmi2SetReal: vr[1] = @PAST@ is not a value reference of this FMU (0 to @LAST@)", false},
     {STEP_COMPLETE, "fmi2SetReal(c, {4294967295}, 1, {7})", AK_OP_SET_REAL,

@@ -5,13 +5,13 @@
 #include "kinematics_general.h"
 
 static void compute(double v[]) {
-    ak_rotation_angle(&v[AK_VR_Q], &v[AK_VR_ROTATION_ANGLE]);
+    ak_rotation_angle(&v[KIN_VR_Q], &v[KIN_VR_ROTATION_ANGLE]);
 }
 
 static void tangents(const double v[], double dv[]) {
-    ak_rotation_angle_tangent(&v[AK_VR_Q], &dv[AK_VR_Q], &dv[AK_VR_ROTATION_ANGLE]);
+    ak_rotation_angle_tangent(&v[KIN_VR_Q], &dv[KIN_VR_Q], &dv[KIN_VR_ROTATION_ANGLE]);
 }
 
 static const unsigned int ARGUMENTS[] = {30, 31, 32, 33};
 
-const ak_derived_outputs AK_DERIVED_OUTPUTS = {4, ARGUMENTS, compute, tangents};
+const ak_derived_outputs KIN_DERIVED_OUTPUTS = {4, ARGUMENTS, compute, tangents};

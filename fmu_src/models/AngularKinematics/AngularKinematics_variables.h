@@ -6,30 +6,30 @@
 
 #include "model.h"
 
-#define AK_GUID "{c3391885-ba93-4824-bb36-df39703b63ee}"
+#define KIN_GUID "{c3391885-ba93-4824-bb36-df39703b63ee}"
 
 enum {
-    AK_VR_THETA = 0,
-    AK_VR_THETA_DOT = 3,
-    AK_VR_THETA_DDOT = 6,
-    AK_VR_OMEGA_FIXED = 9,
-    AK_VR_OMEGA_BODY = 12,
-    AK_VR_ALPHA_FIXED = 15,
-    AK_VR_ALPHA_BODY = 18,
-    AK_VR_R = 21,
-    AK_VR_Q = 30,
-    AK_VR_W_FIXED = 34,
-    AK_VR_W_BODY = 43,
-    AK_VR_W_FIXED_DOT = 52,
-    AK_VR_W_BODY_DOT = 61,
-    AK_VR_ROTATION_ANGLE = 71,
-    AK_VR_SEQUENCE = 70,
-    AK_N_INPUTS = 9,
-    AK_N_OUTPUTS = 62,
-    AK_N_VALUE_REFERENCES = 72 /* highest value reference + 1 */
+    KIN_VR_THETA = 0,
+    KIN_VR_THETA_DOT = 3,
+    KIN_VR_THETA_DDOT = 6,
+    KIN_VR_OMEGA_FIXED = 9,
+    KIN_VR_OMEGA_BODY = 12,
+    KIN_VR_ALPHA_FIXED = 15,
+    KIN_VR_ALPHA_BODY = 18,
+    KIN_VR_R = 21,
+    KIN_VR_Q = 30,
+    KIN_VR_W_FIXED = 34,
+    KIN_VR_W_BODY = 43,
+    KIN_VR_W_FIXED_DOT = 52,
+    KIN_VR_W_BODY_DOT = 61,
+    KIN_VR_ROTATION_ANGLE = 71,
+    KIN_VR_SEQUENCE = 70,
+    KIN_N_INPUTS = 9,
+    KIN_N_OUTPUTS = 62,
+    KIN_N_VALUE_REFERENCES = 72 /* highest value reference + 1 */
 };
 
-extern const ak_variable AK_VARIABLES[AK_N_VALUE_REFERENCES];
-extern const ak_derived_outputs AK_DERIVED_OUTPUTS; /* AngularKinematics_derived.c */
+extern const ak_variable KIN_VARIABLES[KIN_N_VALUE_REFERENCES];
+extern const ak_derived_outputs KIN_DERIVED_OUTPUTS; /* AngularKinematics_derived.c */
 
 #endif

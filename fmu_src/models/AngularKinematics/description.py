@@ -10,7 +10,7 @@ An array of shape (3,) or (3, 3) takes consecutive value references from `vr`, r
 differs per element, a function of the element's indices (1-based) giving element names."""
 
 NAME = "AngularKinematics"
-C_PREFIX = "AK"  # of the generated C names: AK_VR_..., AK_VARIABLES; set here only (codegen reads it)
+C_PREFIX = "KIN"  # of the generated C names: KIN_VR_..., KIN_VARIABLES; set here only (codegen reads it)
 GUID = "{c3391885-ba93-4824-bb36-df39703b63ee}"
 DESCRIPTION = ("Angular velocity and angular acceleration of a rigid body from the angles of any "
                "of the 24 rotation sequences and their first and second time derivatives; "
