@@ -142,6 +142,10 @@ static void copy_out(const ak_instance *instance, const fmi3ValueReference vr[],
 static bool usual_set(const fmi3ValueReference vr[], size_t nvr, size_t n_values, bool *one_run) {
     size_t total = 0;
     *one_run = true;
+    if (nvr == 1) { /* one input array, the usual set of an importer: no loop */
+        return vr[0] < (fmi3ValueReference)AK_MODEL.n_inputs &&
+               AK3_ARRAYS[vr[0]].first_vr == vr[0] && AK3_ARRAYS[vr[0]].n_elements == n_values;
+    }
     for (size_t i = 0; i < nvr; i++) {
         if (vr[i] >= (fmi3ValueReference)AK_MODEL.n_inputs || AK3_ARRAYS[vr[i]].first_vr != vr[i]) {
             return false;

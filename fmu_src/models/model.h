@@ -133,6 +133,9 @@ typedef struct {
     void (*output_derivatives)(ak_model_data *data, const unsigned int vr[], size_t nvr,
                                double value[]);
     bool can_interpolate_inputs;
+    /* An output is computed from data->input_derivatives (AttitudePropagator's alpha in
+     * co-simulation): a change of them makes the outputs stale. */
+    bool outputs_use_input_derivatives;
     /* The outputs computed from others by core functions (generated; compute NULL when none);
      * which they are is the variable table's group AK_GROUP_DERIVED. */
     const ak_derived_outputs *derived;

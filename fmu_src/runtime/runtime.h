@@ -53,7 +53,8 @@ ak_status ak_set_input_derivatives(ak_instance *instance, const char *function,
                                    const unsigned int vr[], size_t nvr, const int order[],
                                    const double value[]);
 
-/* Recomputes data.any_input_derivative after the derivatives changed. */
+/* After the input derivatives changed: recomputes data.any_input_derivative, and marks the
+ * outputs stale for a model whose outputs use them. */
 void ak_input_derivatives_changed(ak_instance *instance);
 /* A set of an input forgets its derivatives: the importer restated the value at a new point
  * without a slope, so the input is held from there (docs/capabilities.md). */

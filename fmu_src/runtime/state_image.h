@@ -1,22 +1,9 @@
-/* The byte image of an FMU state, for both FMI layers: FMI-independent, like model_outputs.h.
- * Each layer names its format (magic, version, what it is called in messages) and keeps what is
- * its own: the state-machine states, the interface check and the FMI calls. Layout,
- * little-endian, no pointers; N is the model's number of value references, I its inputs:
- *
- *   offset size  field
- *        0    8  magic (FMI 2 "AKinFMUs", FMI 3 "AKinFMU3": neither layer reads the other's)
- *        8    4  format version
- *       12    4  total size in bytes
- *       16   40  GUID (instantiation token) of the FMU, NUL-padded
- *       56    4  interface of the instance (0 model exchange, 1 co-simulation)
- *       60    4  state-machine state (one bit of the layer's states)
- *       64    8  time
- *       72    8  stop time
- *       80    4  stop time defined (0 or 1)
- *       84    4  reserved, 0
- *       88  8 N  the values, by value reference
- *    88+8N 16 I  FMI 2 only: the input derivatives, I inputs x orders 1 and 2
- *      end-4  4  CRC-32 (IEEE 802.3, as zlib's) of the bytes before it
+/* The byte image of an FMU state, for both FMI layers: FMI-independent. Each layer names its
+ * format (magic, version, what it is called in messages, whether the input derivatives are in
+ * it); the layout (little-endian, no pointers: header, the values by value reference, FMI 2's
+ * input derivatives, CRC-32) is written once, in codegen/state_layout.py, which generates the
+ * table and every model's size in docs/capabilities.md#fmu-state; the offsets below must be
+ * that table's (tests/python/test_documentation.py reads them back from real states).
  *
  * A byte string is checked from its length to its last value before anything is decoded; a
  * check that fails logs, through the model's logger (ak_model_log), which one and the values

@@ -21,6 +21,9 @@ static bool times_close(double a, double b) {
 }
 
 void ak_input_derivatives_changed(ak_instance *instance) {
+    if (AK_MODEL.outputs_use_input_derivatives) {
+        ak_instance_inputs_changed(instance);
+    }
     instance->data.any_input_derivative = false;
     for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {

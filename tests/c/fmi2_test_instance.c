@@ -108,7 +108,7 @@ bool ak_test_outputs_consistent(fmi2Component c) {
     ak_eval_status expected_status = fresh.outputs.status;
     if (fresh.outputs.stale) {
         /* Until fmi2ExitInitializationMode the states follow the parameters they start from
-         * (ak_instance_update_outputs): a model that cannot start from them fails the read. */
+         * (ak_instance_update): a model that cannot start from them fails the read. */
         const bool initializing =
             AK_MODEL.initialize != NULL &&
             (fresh.state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) != 0;

@@ -269,7 +269,7 @@ enum {
 static void check_instance(fmi2Component c) {
     const ak_instance *instance = c;
     const unsigned int state = (unsigned int)instance->state;
-    if (state == 0 || (state & (state - 1)) != 0 || (state & ~(AK_INSTANTIATED | READABLE)) != 0 ||
+    if (state == 0 || (state & (state - 1)) != 0 || (state & ~(unsigned int)(AK_INSTANTIATED | READABLE)) != 0 ||
         !isfinite(instance->time)) {
         violated();
     }

@@ -407,6 +407,7 @@ const ak_model AK_MODEL = {
     .jacobian = jacobian,
     .output_derivatives = NULL,
     .can_interpolate_inputs = true,
+    .outputs_use_input_derivatives = true, /* alpha, from omega's derivatives (acceleration) */
     .derived = &AP_DERIVED_OUTPUTS,
     /* The unwrapped angles depend on the path: evaluated at every communication point. */
     .evaluate_in_step = true,
