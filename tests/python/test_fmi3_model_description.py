@@ -111,6 +111,7 @@ def test_capability_flags(model):
     assert cs.get("hasEventMode") is None
 
 
+@pytest.mark.external  # the other platforms' binaries come from the cross builds
 @pytest.mark.parametrize("model", MODELS)
 def test_fmu_contents(model):
     with zipfile.ZipFile(fmu3_path(model)) as z:
