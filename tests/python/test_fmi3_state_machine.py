@@ -24,7 +24,8 @@ ALLOWED = {
     "fmi3ExitInitializationMode": ({"Initialization Mode"}, {"Initialization Mode"}),
     "fmi3EnterEventMode": (set(), {"Continuous-Time Mode"}),
     "fmi3Terminate": ({"Step Mode"}, {"Event Mode", "Continuous-Time Mode"}),
-    "fmi3GetFloat64": (READ_CS, READ_ME),
+    # fmi3Get{Type} in Instantiated gives the start values, or what was set since.
+    "fmi3GetFloat64": ({"Instantiated"} | READ_CS, {"Instantiated"} | READ_ME),
     "fmi3SetFloat64": ({"Instantiated", "Initialization Mode", "Step Mode"},
                        {"Instantiated", "Initialization Mode", "Event Mode",
                         "Continuous-Time Mode"}),
@@ -206,8 +207,13 @@ def test_reset_returns_to_instantiated_with_start_values():
         instance.initialize(parameters={"sequence": 5}, inputs={"theta": [1.0, 2.0, 0.5]})
         assert instance.do_step(0.0, 0.1) == (OK, 0.1)
         assert instance.call("fmi3Reset") == OK
-        # Instantiated again: a parameter can be set, outputs cannot be read.
-        assert instance.get_raw(["omega_fixed"])[0] == ERROR
+        # Instantiated again: the variables read their start values, not the step's.
+        status, values = instance.get_raw(["theta"])
+        assert status == OK and values["theta"].tolist() == [0.0, 0.0, 0.0]
+        assert instance.set({"theta": [0.25, 0.5, 0.75]}) == OK  # and what was set since
+        status, values = instance.get_raw(["theta"])
+        assert status == OK and values["theta"].tolist() == [0.25, 0.5, 0.75]
+        assert instance.call("fmi3Reset") == OK
         instance.initialize()
         assert instance.get(["theta"])["theta"].tolist() == [0.0, 0.0, 0.0]
         sequence = (ctypes.c_int64 * 1)()
