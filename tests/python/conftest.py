@@ -20,7 +20,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 BUILD_DIR = ROOT / "build"
 sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
 sys.path.insert(0, str(ROOT))  # codegen: the project's facts and the model descriptions
-from codegen import project  # noqa: E402
+from codegen import models, project  # noqa: E402
 
 # The sequences a quick run (pytest -m "not slow") checks: one body-fixed Tait-Bryan, one
 # space-fixed proper Euler; the other 22 cases of each per-sequence test are marked slow.
@@ -41,8 +41,7 @@ FMU_ENVIRONMENT = {"AngularKinematics": "AK_FMU", "EulerRates": "AK_EULER_FMU",
 
 def description_path_of(model):
     """The model's modelDescription.xml in the repository (generated from its description.py)."""
-    return ROOT / "modelDescription.xml" if model == "AngularKinematics" else \
-        ROOT / "fmu_src" / "models" / model / "modelDescription.xml"
+    return models.load(model).model_description
 
 
 @functools.lru_cache(maxsize=None)
@@ -125,9 +124,9 @@ def c_table_of(model):
 
 
 def abuse_program(program, model):
-    """build/<program> for AngularKinematics, build/<program>_<Model> for the others
-    (cmake/abuse_tests.cmake)."""
-    return BUILD_DIR / (program if model == "AngularKinematics" else f"{program}_{model}")
+    """build/<program> for the first model of codegen.project.MODELS, build/<program>_<Model>
+    for the others (cmake/abuse_tests.cmake)."""
+    return BUILD_DIR / (program if model == project.MODELS[0] else f"{program}_{model}")
 
 
 @functools.lru_cache(maxsize=None)
