@@ -25,6 +25,7 @@
 #include "AttitudePropagator_variables.h"
 #include "fmi2Functions.h"
 #include "fmi2_instance.h"
+#include "test_check.h"
 
 static long live_allocations = 0;
 static pthread_mutex_t allocation_lock = PTHREAD_MUTEX_INITIALIZER;
@@ -81,17 +82,6 @@ static double uniform(uint64_t *seed) {
     return (double)next(seed) / 9007199254740992.0 * 2.0 - 1.0;
 }
 
-static int failures = 0;
-static pthread_mutex_t failure_lock = PTHREAD_MUTEX_INITIALIZER;
-
-static void fail(const char *what, long detail) {
-    pthread_mutex_lock(&failure_lock);
-    if (failures++ < 20) {
-        printf("FAIL %s (%ld)\n", what, detail);
-    }
-    pthread_mutex_unlock(&failure_lock);
-}
-
 /* ---- 1. many instances ------------------------------------------------------------------------ */
 
 static const fmi2ValueReference OMEGA_VRS[3] = {AP_VR_OMEGA, AP_VR_OMEGA + 1, AP_VR_OMEGA + 2};
@@ -111,7 +101,7 @@ static void drive(fmi2Component c, int step) {
     if (fmi2SetReal(c, OMEGA_VRS, 3, omega) != fmi2OK ||
         fmi2SetRealInputDerivatives(c, OMEGA_VRS, 3, order, slope) != fmi2OK ||
         fmi2DoStep(c, t, 0.01, fmi2True) != fmi2OK) {
-        fail("a step of a healthy instance", step);
+        ak_check(false, "a step of a healthy instance (%ld)", (long)step);
     }
 }
 
@@ -124,13 +114,13 @@ static void *many_instances(void *argument) {
     many_job *job = argument;
     fmi2Component *c = calloc((size_t)job->instances, sizeof *c);
     if (c == NULL) {
-        fail("out of memory", 0);
+        ak_check(false, "out of memory");
         return NULL;
     }
     for (int i = 0; i < job->instances; i++) {
         c[i] = instantiate(fmi2CoSimulation, NULL);
         if (!start(c[i])) {
-            fail("start an instance", i);
+            ak_check(false, "start an instance (%ld)", (long)i);
         }
     }
     for (int step = 0; step < job->steps; step++) {
@@ -144,7 +134,7 @@ static void *many_instances(void *argument) {
         double q[4];
         if (c[i] == NULL || fmi2GetReal(c[i], Q_VRS, 4, q) != fmi2OK ||
             memcmp(q, job->reference, sizeof q) != 0) {
-            fail("an instance's q differs from the reference run", i);
+            ak_check(false, "an instance's q differs from the reference run (%ld)", (long)i);
         }
         if (c[i] != NULL) {
             fmi2FreeInstance(c[i]);
@@ -158,7 +148,7 @@ static void run_many(int threads, int instances, int steps) {
     many_job job = {instances, steps, {0}};
     fmi2Component reference = instantiate(fmi2CoSimulation, NULL);
     if (!start(reference)) {
-        fail("start the reference", 0);
+        ak_check(false, "start the reference");
         return;
     }
     for (int step = 0; step < steps; step++) {
@@ -246,7 +236,7 @@ static void run_random_calls(fmi2Type type, long calls, uint64_t seed) {
     fmi2Component c = instantiate(type, &last);
     fmi2FMUstate saved = NULL;
     if (c == NULL) {
-        fail("instantiate", 0);
+        ak_check(false, "instantiate");
         return;
     }
     for (long k = 0; k < calls; k++) {
@@ -258,19 +248,19 @@ static void run_random_calls(fmi2Type type, long calls, uint64_t seed) {
         /* The logger callback moves last.count during the call, which cppcheck cannot see. */
         /* cppcheck-suppress knownConditionTrueFalse */
         if (status == fmi2Error && (last.count == messages || strstr(last.text, "fmi2") == NULL)) {
-            fail("fmi2Error without a message naming the function", k);
+            ak_check(false, "fmi2Error without a message naming the function (%ld)", (long)k);
         }
         if (status == fmi2Error &&
             memcmp(before.data.values, now->data.values, sizeof before.data.values) != 0 &&
             now->state == before.state) {
             /* A refused call changes no value (a refused fmi2ExitInitializationMode included). */
-            fail("a refused call changed a value", k);
+            ak_check(false, "a refused call changed a value (%ld)", (long)k);
         }
         const double *q = &now->data.values[AP_VR_Q];
         const double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
         const bool finite = isfinite(q[0]) && isfinite(q[1]) && isfinite(q[2]) && isfinite(q[3]);
         if (!finite || (type == fmi2CoSimulation && fabs(norm - 1.0) > 1e-15)) {
-            fail("q not unit (co-simulation) or not finite", k);
+            ak_check(false, "q not unit (co-simulation) or not finite (%ld)", (long)k);
         }
     }
     if (saved != NULL) {
@@ -292,9 +282,9 @@ int main(int argc, char **argv) {
     run_random_calls(fmi2CoSimulation, calls, 1);
     run_random_calls(fmi2ModelExchange, calls, 2);
     if (live_allocations != 0) {
-        fail("allocations not freed", live_allocations);
+        ak_check(false, "allocations not freed (%ld)", (long)live_allocations);
     }
     printf("AttitudePropagator abuse: %d threads x %d instances x %d steps, 2 x %ld random calls: "
-           "%d failure(s)\n", threads, instances, steps, calls, failures);
-    return failures == 0 ? 0 : 1;
+           "%d failure(s)\n", threads, instances, steps, calls, ak_check_failures());
+    return ak_check_exit_status();
 }
