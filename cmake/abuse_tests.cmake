@@ -4,10 +4,11 @@
 # (build/test_fmi2_calls ...), the others end in _<Model> (build/test_fmi2_calls_EulerRates).
 find_package(Threads REQUIRED)
 
-# ak_add_abuse_tests(<model> <rows file> [CALLS_ONLY]): CALLS_ONLY builds the call driver
-# test_fmi2_calls (its bad-input table) and not the many-instance, soak and fuzz programs.
+# ak_add_abuse_tests(<model> <rows file> [NO_INSTANCES_OR_SOAK]): the call driver
+# test_fmi2_calls (its bad-input table) and, in a fuzz build, the fuzzer fuzz_fmi2, for every
+# model; the many-instance and soak programs unless NO_INSTANCES_OR_SOAK.
 function(ak_add_abuse_tests model rows_source)
-  cmake_parse_arguments(_ARG "CALLS_ONLY" "" "" ${ARGN})
+  cmake_parse_arguments(_ARG "NO_INSTANCES_OR_SOAK" "" "" ${ARGN})
   if(model STREQUAL "AngularKinematics")
     set(_suffix "")
   else()
@@ -37,16 +38,18 @@ function(ak_add_abuse_tests model rows_source)
   target_link_libraries(ak_test_master_${model} PUBLIC ak_fmu_for_tests_${model}
                                                       kinematics_123_reference)
 
-  if(NOT AK_FUZZ)
-    add_executable(test_fmi2_calls${_suffix} tests/c/test_fmi2_calls.c)
-    target_compile_options(test_fmi2_calls${_suffix} PRIVATE ${AK_WARNINGS})
-    target_link_libraries(test_fmi2_calls${_suffix} PRIVATE ak_test_master_${model})
-    add_test(NAME fmi2_calls_${model} COMMAND test_fmi2_calls${_suffix})
-  endif()
-  if(_ARG_CALLS_ONLY)
+  if(AK_FUZZ)
+    add_executable(fuzz_fmi2${_suffix} tests/c/fuzz_fmi2.c)
+    target_compile_options(fuzz_fmi2${_suffix} PRIVATE ${AK_WARNINGS})
+    target_link_libraries(fuzz_fmi2${_suffix} PRIVATE ak_test_master_${model})
+    target_link_options(fuzz_fmi2${_suffix} PRIVATE -fsanitize=fuzzer)
     return()
   endif()
-  if(NOT AK_FUZZ)
+  add_executable(test_fmi2_calls${_suffix} tests/c/test_fmi2_calls.c)
+  target_compile_options(test_fmi2_calls${_suffix} PRIVATE ${AK_WARNINGS})
+  target_link_libraries(test_fmi2_calls${_suffix} PRIVATE ak_test_master_${model})
+  add_test(NAME fmi2_calls_${model} COMMAND test_fmi2_calls${_suffix})
+  if(NOT _ARG_NO_INSTANCES_OR_SOAK)
     add_executable(test_fmi2_instances${_suffix} tests/c/test_fmi2_instances.c)
     target_compile_options(test_fmi2_instances${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(test_fmi2_instances${_suffix} PRIVATE ak_test_master_${model}
@@ -57,22 +60,17 @@ function(ak_add_abuse_tests model rows_source)
     target_compile_options(soak_fmi2${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(soak_fmi2${_suffix} PRIVATE ak_test_master_${model})
     add_test(NAME fmi2_soak_short_${model} COMMAND soak_fmi2${_suffix} 100000)
-  else()
-    add_executable(fuzz_fmi2${_suffix} tests/c/fuzz_fmi2.c)
-    target_compile_options(fuzz_fmi2${_suffix} PRIVATE ${AK_WARNINGS})
-    target_link_libraries(fuzz_fmi2${_suffix} PRIVATE ak_test_master_${model})
-    target_link_options(fuzz_fmi2${_suffix} PRIVATE -fsanitize=fuzzer)
   endif()
 endfunction()
 
 ak_add_abuse_tests(AngularKinematics fmi2_bad_input_angular_kinematics.c)
 ak_add_abuse_tests(EulerRates fmi2_bad_input_euler_rates.c)
 
-# AttitudePropagator (the first model with continuous states, 6 inputs): the call driver and its
-# bad-input table like the others; for many instances in threads and random calls with bad
-# arguments in both interfaces, its own abuse program (tests/c/abuse_attitude.c) until the
-# many-instance, soak and fuzz programs above cover it.
-ak_add_abuse_tests(AttitudePropagator fmi2_bad_input_attitude_propagator.c CALLS_ONLY)
+# AttitudePropagator (the first model with continuous states, 6 inputs): the call driver, its
+# bad-input table and the fuzzer like the others; for many instances in threads and random calls
+# with bad arguments in both interfaces, its own abuse program (tests/c/abuse_attitude.c) until
+# the many-instance and soak programs above cover it.
+ak_add_abuse_tests(AttitudePropagator fmi2_bad_input_attitude_propagator.c NO_INSTANCES_OR_SOAK)
 if(NOT AK_FUZZ)
   add_executable(abuse_attitude tests/c/abuse_attitude.c)
   target_compile_options(abuse_attitude PRIVATE ${AK_WARNINGS})
