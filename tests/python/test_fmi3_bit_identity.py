@@ -7,8 +7,7 @@ import ctypes
 import numpy as np
 import pytest
 
-from conftest import Instance
-from fmi3_support import Instance3, doubles, vrs
+from fmi3_support import doubles, vrs
 
 STEPS = 12
 
@@ -35,9 +34,8 @@ def pair(model, make_model_instance):
     """The model's FMI 2 instance (conftest's `model`: each of codegen.project.MODELS) and its
     FMI 3 instance."""
     fmi2 = make_model_instance("fmi2")
-    fmi3 = Instance3(model.name, name="fmi3")
-    yield model.name, fmi2, fmi3
-    fmi3.free()
+    fmi3 = make_model_instance("fmi3", fmi_version=3)
+    return model.name, fmi2, fmi3
 
 
 def test_fmi3_outputs_bit_identical_to_fmi2(pair, report):
@@ -107,28 +105,24 @@ def check_output_derivatives(fmi2, fmi3, outputs, output_vrs):
     assert np.array_equal(bits(list(o2)), bits(list(o3)))
 
 
-def test_signed_zero_inputs_give_the_fmi2_bits(unzipdir, model_description):
+def test_signed_zero_inputs_give_the_fmi2_bits(model_description, new_instance):
     """A -0.0 set over 0.0 differs in its bits: both layers store it and evaluate from it, so the
     input reads back as set and the outputs carry the same bits in both (signs of zero included)."""
-    fmi2 = Instance(unzipdir, model_description, name="fmi2")
-    fmi3 = Instance3("AngularKinematics", name="fmi3")
+    fmi2 = new_instance("AngularKinematics", name="fmi2")
+    fmi3 = new_instance("AngularKinematics", name="fmi3", fmi_version=3)
     output_vrs = sorted(v.valueReference for v in model_description.modelVariables
                         if v.causality == "output")
-    try:
-        fmi2.initialize(parameters={"sequence": 3})
-        fmi3.initialize(parameters={"sequence": 3})
-        for u in ([-0.0] * 9, [0.0, -0.0, 0.5, -0.0, 0.0, 0.0, 0.0, -0.0, 0.0]):
-            assert fmi2.call("fmi2SetReal", vrs(range(9)), 9, doubles(u)) == 0
-            assert fmi3.set({"theta": u[:3], "theta_dot": u[3:6], "theta_ddot": u[6:]}) == 0
-            names = fmi3.outputs()
-            y3 = np.concatenate([fmi3.get(names)[n] for n in names])
-            y2 = (ctypes.c_double * len(y3))()
-            assert fmi2.call("fmi2GetReal", vrs(output_vrs), len(y3), y2) == 0
-            assert np.array_equal(bits(list(y2)), bits(y3))
-            assert np.array_equal(bits(fmi3.get(["theta"])["theta"]), bits(u[:3]))
-            theta2 = (ctypes.c_double * 3)()
-            assert fmi2.call("fmi2GetReal", vrs(range(3)), 3, theta2) == 0
-            assert np.array_equal(bits(list(theta2)), bits(u[:3]))
-    finally:
-        fmi2.free()
-        fmi3.free()
+    fmi2.initialize(parameters={"sequence": 3})
+    fmi3.initialize(parameters={"sequence": 3})
+    for u in ([-0.0] * 9, [0.0, -0.0, 0.5, -0.0, 0.0, 0.0, 0.0, -0.0, 0.0]):
+        assert fmi2.call("fmi2SetReal", vrs(range(9)), 9, doubles(u)) == 0
+        assert fmi3.set({"theta": u[:3], "theta_dot": u[3:6], "theta_ddot": u[6:]}) == 0
+        names = fmi3.outputs()
+        y3 = np.concatenate([fmi3.get(names)[n] for n in names])
+        y2 = (ctypes.c_double * len(y3))()
+        assert fmi2.call("fmi2GetReal", vrs(output_vrs), len(y3), y2) == 0
+        assert np.array_equal(bits(list(y2)), bits(y3))
+        assert np.array_equal(bits(fmi3.get(["theta"])["theta"]), bits(u[:3]))
+        theta2 = (ctypes.c_double * 3)()
+        assert fmi2.call("fmi2GetReal", vrs(range(3)), 3, theta2) == 0
+        assert np.array_equal(bits(list(theta2)), bits(u[:3]))
