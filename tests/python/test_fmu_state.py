@@ -1,8 +1,9 @@
 """FMU state: get, set, free, serialize, deserialize. The serialized form is self-contained (fixed
 little-endian layout, format version, GUID, CRC-32); corrupt, truncated and foreign bytes are
 refused with fmi2Error and a clear message, leaving the instance as it was. What every model shares
-runs for each model (the `model` fixture); the byte layout and its messages are checked on
-AngularKinematics."""
+runs for each model (the `model` fixture), what both FMI layers share for both (`layer`: FMI 2 and
+FMI 3; test_fmi3_fmu_state.py has what is FMI 3's own); the byte layout and its messages are
+checked on AngularKinematics."""
 import ctypes
 import struct
 import xml.etree.ElementTree as ET
@@ -92,20 +93,145 @@ def test_rollback_restores_time_values_and_input_derivatives(model, make_model_i
     assert state.value is None
 
 
-def test_round_trip_across_two_instances(model, make_model_instance):
-    first = running(make_model_instance, "first", model)
-    data = first.fmu.serializeFMUstate(first.fmu.getFMUstate())
-    # The header, 8 bytes per variable and 16 (two input derivatives) per input, the CRC.
-    assert len(data) == 92 + 8 * len(model.c_table["variables"]) + 16 * len(model.inputs)
-    second = make_model_instance("second")  # just instantiated, never initialized
-    state = second.fmu.deSerializeFMUstate(data)
-    second.fmu.setFMUstate(state)
-    assert snapshot(second) == snapshot(first)
-    assert np.array_equal(stepping(second, 0.2, 6), stepping(first, 0.2, 6))
-    # The second instance serializes to the same bytes as the first at the same point.
-    assert second.fmu.serializeFMUstate(second.fmu.getFMUstate()) == \
-        first.fmu.serializeFMUstate(first.fmu.getFMUstate())
+class Layer:
+    """The FMU-state functions of one FMI version (same arguments in both), called raw, and what
+    the tests need around them: an instance started with inputs, its inputs and outputs as bits,
+    a step."""
+
+    def __init__(self, version):
+        self.version = version
+        fmi = f"fmi{version}"
+        self.get, self.set, self.free = (f"{fmi}GetFMU{self.state_word}", f"{fmi}SetFMU{self.state_word}",
+                                         f"{fmi}FreeFMU{self.state_word}")
+        self.size = f"{fmi}SerializedFMU{self.state_word}Size"
+        self.serialize = f"{fmi}SerializeFMU{self.state_word}"
+        self.deserialize = "fmi2DeSerializeFMUstate" if version == 2 else "fmi3DeserializeFMUState"
+        self.magic = b"AKinFMUs" if version == 2 else b"AKinFMU3"
+        self.byte = ctypes.c_char if version == 2 else ctypes.c_uint8  # fmi2Byte, fmi3Byte
+
+    @property
+    def state_word(self):
+        return "state" if self.version == 2 else "State"
+
+    def __repr__(self):
+        return f"FMI {self.version}"
+
+    def expected_size(self, model):
+        """92 bytes of header and CRC, 8 per value reference; FMI 2 also 16 (two input
+        derivatives) per input."""
+        derivatives = 16 * len(model.inputs) if self.version == 2 else 0
+        assert len(model.c_table["variables"]) == model.largest_vr + 1  # no gap
+        return 92 + 8 * len(model.c_table["variables"]) + derivatives
+
+    def input_names(self, instance):
+        return [v.name for v in instance.model_description.modelVariables if v.causality == "input"] \
+            if self.version == 2 else instance.inputs()
+
+    def set_inputs(self, instance, flat):
+        """Every input from one flat vector, in value-reference order; the status."""
+        names = self.input_names(instance)
+        if self.version == 2:
+            return instance.set(dict(zip(names, flat)))
+        ends = np.cumsum([instance.size[n] for n in names])[:-1]
+        return instance.set(dict(zip(names, np.split(np.asarray(flat, dtype=float), ends))))
+
+    def started(self, new_instance, model, name):
+        """Initialized with sequence 11 and the model's valid inputs (FMI 2: three input
+        derivatives too, as running()), stop time 10, stepped to t = 0.25."""
+        instance = new_instance(model.name, name=name, fmi_version=self.version)
+        instance.initialize(stop_time=10.0, parameters={"sequence": 11})
+        assert self.set_inputs(instance, list(model.valid_inputs.values())) == 0
+        if self.version == 2:
+            names = model.inputs
+            assert set_derivatives(instance, {names[0]: 0.5, names[len(names) // 2]: -1.0,
+                                              names[-1]: 2.0}) == 0
+        assert self.step(instance, 0.0, 0.25) == (0, 0.25)
+        return instance
+
+    def values(self, instance):
+        """The bits of every input and output (FMI 2: and of the last successful time)."""
+        if self.version == 2:
+            time = np.array([instance.fmu.getRealStatus(2)])  # fmi2LastSuccessfulTime
+            return np.concatenate([time, instance.get(observable(instance))]).view(np.uint64).tolist()
+        values = instance.get(instance.inputs() + instance.outputs())
+        return np.concatenate(list(values.values())).view(np.uint64).tolist()
+
+    def step(self, instance, t, h):
+        """(status, the instance's time after the step)."""
+        if self.version == 3:
+            return instance.do_step(t, h)
+        status = instance.call("fmi2DoStep", ctypes.c_double(t), ctypes.c_double(h), 1)
+        return status, instance.fmu.getRealStatus(2)  # fmi2LastSuccessfulTime
+
+    def get_state(self, instance, state=None):
+        state = ctypes.c_void_p() if state is None else state
+        assert instance.call(self.get, ctypes.byref(state)) == 0
+        return state
+
+    def serialized(self, instance, state):
+        size = ctypes.c_size_t()
+        assert instance.call(self.size, state, ctypes.byref(size)) == 0
+        buffer = (self.byte * size.value)()
+        assert instance.call(self.serialize, state, buffer, size.value) == 0
+        return bytes(buffer)
+
+    def deserialized(self, instance, data):
+        """(status, state) of deserializing the bytes."""
+        state = ctypes.c_void_p()
+        buffer = (self.byte * max(len(data), 1)).from_buffer_copy(data or b"\0")
+        return instance.call(self.deserialize, buffer, len(data), ctypes.byref(state)), state
+
+
+@pytest.fixture(params=[2, 3], ids=["fmi2", "fmi3"])
+def layer(request):
+    return Layer(request.param)
+
+
+def test_state_restores_everything_bit_for_bit_also_in_another_instance(layer, model, new_instance,
+                                                                         report):
+    first = layer.started(new_instance, model, "first")
+    second = new_instance(model.name, name="second", fmi_version=layer.version)  # never initialized
+    state = layer.get_state(first)
+    saved = layer.values(first)
+    data = layer.serialized(first, state)
+    assert len(data) == layer.expected_size(model)
+    assert data[:8] == layer.magic
+    # Move on (other inputs, a step), then back: the values and the time.
+    assert layer.set_inputs(first, list(OTHER.values())[:len(model.inputs)]) == 0
+    assert layer.step(first, 0.25, 0.5) == (0, 0.75)
+    assert layer.values(first) != saved
+    assert first.call(layer.set, state) == 0
+    assert layer.values(first) == saved
+    # Into the fresh instance through the bytes.
+    status, copy = layer.deserialized(second, data)
+    assert status == 0
+    assert second.call(layer.set, copy) == 0
+    assert layer.values(second) == saved
+    # Both go on alike, from the restored time (0.25), and serialize to the same bytes.
+    t = 0.25
+    for _ in range(6):
+        assert layer.step(first, t, 0.05) == layer.step(second, t, 0.05) == (0, t + 0.05)
+        assert layer.values(second) == layer.values(first)
+        t += 0.05
+    assert layer.serialized(second, layer.get_state(second)) == \
+        layer.serialized(first, layer.get_state(first))
+    # A state object passed back is reused; freed, it is NULL.
+    assert layer.get_state(first, state) is state
+    assert first.call(layer.free, ctypes.byref(state)) == 0 and not state.value
+    assert second.call(layer.free, ctypes.byref(copy)) == 0 and not copy.value
     assert first.errors() == [] and second.errors() == []
+    report(f"{model.name} ({layer}): serialized state {len(data)} bytes; restored bit for bit")
+
+
+def test_states_not_freed_are_freed_with_the_instance(layer, model, new_instance):
+    """Runs under valgrind/ASan in the abuse runs: no leak when the importer forgets states."""
+    instance = layer.started(new_instance, model, "forgetful")
+    states = [layer.get_state(instance) for _ in range(5)]
+    assert len({state.value for state in states}) == 5 and None not in {s.value for s in states}
+    instance.free()
+    # The instance's memory, its states' with it, is gone; a new instance of the model works.
+    again = layer.started(new_instance, model, "again")
+    assert len(layer.serialized(again, layer.get_state(again))) == layer.expected_size(model)
 
 
 def test_layout_is_the_documented_one(make_instance):
