@@ -1,6 +1,8 @@
 """What the prose documents cite is true: every repository path a document names in backticks
-exists (a test named as `file.py::test_name` exists in that file), and the fuzzing time the
-abuse-testing document gives for CI is the one scripts/test_abuse.sh uses.
+exists (a test named as `file.py::test_name` exists in that file), the fuzzing time the
+abuse-testing document gives for CI is the one scripts/test_abuse.sh uses, and the sizes of the
+serialized FMU states the documents quote are the models' (conftest.fmu_state_size for FMI 2,
+92 + 8 N bytes for FMI 3).
 
 Paths under fmu_src/ are left out here: the runtime's files move; DOC_SOURCE_PATHS lists what the
 documents cite there (printed by `python tests/python/test_doc_citations.py`)."""
@@ -10,7 +12,7 @@ import sys
 
 import pytest
 
-from conftest import ROOT, project
+from conftest import ROOT, fmu_state_size, project, value_references_of
 
 DOCUMENTS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]  # CHANGELOG: history
 TOP_LEVEL = set(subprocess.run(["git", "ls-tree", "--name-only", "HEAD"], cwd=ROOT, check=True,
@@ -90,6 +92,21 @@ def test_fuzzing_time_of_ci_is_what_test_abuse_runs():
         assert quoted == {seconds}, (document, quoted, seconds)
     text = (ROOT / "docs" / "abuse_testing.md").read_text()
     assert f"fuzzes {seconds} s into a scratch folder" in text
+
+
+def fmi3_state_size(model):
+    return 92 + 8 * len(value_references_of(model))
+
+
+def test_fmu_state_sizes_quoted_are_the_models():
+    fmi3 = (ROOT / "docs" / "fmi3.md").read_text()
+    quoted = re.search(r"magic `AKinFMU3`, version 1, (\d+) / (\d+) / (\d+) bytes", fmi3).groups()
+    assert [int(q) for q in quoted] == [fmi3_state_size(m) for m in project.FMI3_MODELS]
+    attitude = re.search(r"\| yes \((\d+) bytes: the states and the co-simulation memory", fmi3)
+    assert int(attitude.group(1)) == fmi3_state_size("AttitudePropagator")
+    models = (ROOT / "docs" / "models.md").read_text()
+    euler = re.search(r"FMU state \((\d+) bytes, the same format\)", models)
+    assert int(euler.group(1)) == fmu_state_size("EulerRates")
 
 
 if __name__ == "__main__":
