@@ -105,7 +105,8 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
         }
     }
     ak_check(fmi3SetInt64(instance, &vr_sequence, 1, &sequence, 1) == fmi3OK, "set sequence");
-    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK, "enter");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK,
+             "enter");
     ak_check(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
     fmi3ValueReference inputs[AK_MAX_INPUTS];
     const size_t n_in = input_arrays(inputs);
@@ -123,7 +124,7 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
                                 * AttitudePropagator: a smaller omega[2] */
         }
         ak_check(fmi3SetFloat64(instance, inputs, n_in, u, (size_t)AK_MODEL.n_inputs) == fmi3OK,
-              "set %u", step);
+                 "set %u", step);
         fmi3Boolean event, terminate, early;
         double last;
         const fmi3Status s = fmi3DoStep(instance, t, 0.001, fmi3True, &event, &terminate, &early, &last);
@@ -143,9 +144,10 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
             ak_check(fmi3SerializedFMUStateSize(instance, state, &size) == fmi3OK, "size");
             unsigned char *bytes = malloc(size);
             ak_check(bytes != NULL && fmi3SerializeFMUState(instance, state, bytes, size) == fmi3OK,
-                  "serialize");
+                     "serialize");
             fmi3FMUState copy = NULL;
-            ak_check(fmi3DeserializeFMUState(instance, bytes, size, &copy) == fmi3OK, "deserialize");
+            ak_check(fmi3DeserializeFMUState(instance, bytes, size, &copy) == fmi3OK,
+                     "deserialize");
             ak_check(fmi3SetFMUState(instance, copy) == fmi3OK, "set state");
             ak_check(fmi3FreeFMUState(instance, &copy) == fmi3OK && copy == NULL, "free state");
             free(bytes);
@@ -187,7 +189,8 @@ static void instances(unsigned int n, unsigned int threads, unsigned int steps) 
             pthread_join(ids[k], NULL);
         }
         for (unsigned int i = 0; i < n; i++) {
-            ak_check(digests[i] == run_instance(i, steps, false), "instance %u differs from its lone rerun", i);
+            ak_check(digests[i] == run_instance(i, steps, false),
+                     "instance %u differs from its lone rerun", i);
         }
         printf("fmi3_abuse instances: %u instances x %u steps on %u threads, each bit-identical to a lone rerun\n",
                n, steps, threads);
@@ -232,12 +235,16 @@ static void null_pointers(void) {
     ak_check(fmi3GetFloat64(instance, vr, 2, d, 0) == fmi3Error, "nValues 0");
     ak_check(fmi3GetFMUState(instance, NULL) == fmi3Error, "state NULL");
     ak_check(fmi3SerializedFMUStateSize(instance, NULL, &n) == fmi3Error, "size of NULL");
-    ak_check(fmi3DeserializeFMUState(instance, (const fmi3Byte *)"x", 1, NULL) == fmi3Error, "NULL out");
+    ak_check(fmi3DeserializeFMUState(instance, (const fmi3Byte *)"x", 1, NULL) == fmi3Error,
+             "NULL out");
     ak_check(fmi3SetDebugLogging(instance, fmi3True, 3, NULL) == fmi3Error, "categories NULL");
     ak_check(fmi3GetNumberOfVariableDependencies(instance, 0, NULL) == fmi3Error, "of an input");
-    ak_check(fmi3EnterInitializationMode(instance, fmi3True, -1.0, 0, fmi3False, 0) == fmi3Error, "tol");
-    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3True, -1.0) == fmi3Error, "stop");
-    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, NAN, fmi3False, 0) == fmi3Error, "nan");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3True, -1.0, 0, fmi3False, 0) == fmi3Error,
+             "tol");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3True, -1.0) == fmi3Error,
+             "stop");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, NAN, fmi3False, 0) == fmi3Error,
+             "nan");
     ak_check(counts.errors == 12, "%d errors logged, expected 12", counts.errors);
     fmi3FreeInstance(instance);
 }
@@ -245,7 +252,8 @@ static void null_pointers(void) {
 static void soak(unsigned long steps) {
     log_counts counts = {0, 0};
     fmi3Instance instance = new_instance(&counts);
-    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK, "enter");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK,
+             "enter");
     ak_check(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
     fmi3ValueReference inputs[AK_MAX_INPUTS];
     const size_t n_in = input_arrays(inputs);

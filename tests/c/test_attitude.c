@@ -95,7 +95,9 @@ static void test_exp(void) {
     ak_quat_exp(below, eb);
     ak_quat_exp(above, ea);
     const double expected = cos(1e-4) * (above[0] - below[0]); /* d sin(a) = cos(a) da */
-    ak_check(fabs((ea[1] - eb[1]) - expected) < 1e-19, "%s: %.3e (bound %.3e)", "exp continuous at 1e-4", fabs((ea[1] - eb[1]) - expected), 1e-19);
+    ak_check(fabs((ea[1] - eb[1]) - expected) < 1e-19,
+             "%s: %.3e (bound %.3e)",
+             "exp continuous at 1e-4", fabs((ea[1] - eb[1]) - expected), 1e-19);
 }
 
 /* Constant omega: q(t) = q0 (x) exp(t omega / 2) (body) and exp(t omega / 2) (x) q0 (fixed). */
@@ -125,7 +127,8 @@ static void test_constant_rotation_is_exact(void) {
         }
         /* 1000 products, each rounding to ~1e-16: a bound of 1e-13 is rounding, not truncation
          * (the truncation error of any non-exact method at h = 1e-2 over 10 s is far larger). */
-        ak_check(error < 1e-13, "%s: %.3e (bound %.3e)", frame == AK_FRAME_BODY ? "constant rotation, body" : "constant rotation, fixed", error, 1e-13);
+        ak_check(error < 1e-13,
+                 "%s: %.3e (bound %.3e)", frame == AK_FRAME_BODY ? "constant rotation, body" : "constant rotation, fixed", error, 1e-13);
     }
 }
 
@@ -155,10 +158,13 @@ static void test_input_polynomial(void) {
             worst_given = fmax(worst_given, fabs(c[m][k] - C[m][k]));
         }
     }
-    ak_check(worst < 1e-13, "%s: %.3e (bound %.3e)", "Hermite cubic from the history", worst, 1e-13);
-    ak_check(worst_given < 1e-13, "%s: %.3e (bound %.3e)", "cubic from w2 and the history slope", worst_given, 1e-13);
+    ak_check(worst < 1e-13,
+             "%s: %.3e (bound %.3e)", "Hermite cubic from the history", worst, 1e-13);
+    ak_check(worst_given < 1e-13,
+             "%s: %.3e (bound %.3e)", "cubic from w2 and the history slope", worst_given, 1e-13);
     ak_attitude_input_polynomial(w0, w1, w2, NULL, NULL, 0.0, c);
-    ak_check(c[2][1] == C[2][1] && c[3][1] == 0.0, "%s: %.3e (bound %.3e)", "Taylor without history", c[3][1], 0.0);
+    ak_check(c[2][1] == C[2][1] && c[3][1] == 0.0,
+             "%s: %.3e (bound %.3e)", "Taylor without history", c[3][1], 0.0);
 }
 
 /* Angles -> R -> angles returns the principal angles for all 24 sequences, and the angles of a
@@ -184,7 +190,9 @@ static void test_angles_round_trip(void) {
             ak_attitude_angles(sequence, R, previous, back, &distance);
             ak_general_rotation_matrix(sequence, back, Rb);
             worst_matrix = fmax(worst_matrix, matrix_difference(R, Rb));
-            ak_check(fabs(back[0] - previous[0]) < 0.1, "%s: %.3e (bound %.3e)", "unwrapped theta1 near previous", fabs(back[0] - previous[0]), 0.1);
+            ak_check(fabs(back[0] - previous[0]) < 0.1,
+                     "%s: %.3e (bound %.3e)",
+                     "unwrapped theta1 near previous", fabs(back[0] - previous[0]), 0.1);
         }
         /* The singular attitude: theta2 = pi/2 (Tait-Bryan) or 0 (proper Euler). */
         const double singular[3] = {0.7, sequence->proper_euler ? 0.0 : 1.5707963267948966, -0.4};
@@ -193,11 +201,17 @@ static void test_angles_round_trip(void) {
         ak_general_rotation_matrix(sequence, singular, R);
         const bool held = ak_attitude_angles(sequence, R, previous, back, &distance);
         ak_general_rotation_matrix(sequence, back, Rb);
-        ak_check(held && back[0] == previous[0], "%s: %.3e (bound %.3e)", "theta1 held at the singular angle", back[0], previous[0]);
-        ak_check(matrix_difference(R, Rb) < 1e-15, "%s: %.3e (bound %.3e)", "singular angles rebuild R", matrix_difference(R, Rb), 1e-15);
+        ak_check(held && back[0] == previous[0],
+                 "%s: %.3e (bound %.3e)",
+                 "theta1 held at the singular angle", back[0], previous[0]);
+        ak_check(matrix_difference(R, Rb) < 1e-15,
+                 "%s: %.3e (bound %.3e)",
+                 "singular angles rebuild R", matrix_difference(R, Rb), 1e-15);
     }
-    ak_check(worst < 1e-14, "%s: %.3e (bound %.3e)", "angles -> R -> angles (times distance)", worst, 1e-14);
-    ak_check(worst_matrix < 2e-15, "%s: %.3e (bound %.3e)", "continuous angles rebuild R", worst_matrix, 2e-15);
+    ak_check(worst < 1e-14,
+             "%s: %.3e (bound %.3e)", "angles -> R -> angles (times distance)", worst, 1e-14);
+    ak_check(worst_matrix < 2e-15,
+             "%s: %.3e (bound %.3e)", "continuous angles rebuild R", worst_matrix, 2e-15);
 }
 
 /* A smooth trajectory through gimbal lock: theta(t) recovered from R(theta(t)) sampled densely,
@@ -225,7 +239,8 @@ static void test_trajectory_through_singularity(void) {
             }
         }
     }
-    ak_check(worst < 1.0, "%s: %.3e (bound %.3e)", "trajectory through gimbal lock (error / bound)", worst, 1.0);
+    ak_check(worst < 1.0,
+             "%s: %.3e (bound %.3e)", "trajectory through gimbal lock (error / bound)", worst, 1.0);
 }
 
 /* A tumbling body: omega(t) = (sin t, 0.5 cos 2t, 0.3 + 0.2 sin 3t) rad/s, body frame, h = 1e-3,
@@ -278,7 +293,8 @@ int main(int argc, char **argv) {
     norm_run(100000, &drift, &correction, &uncorrected);
     ak_check(drift < 1e-15, "%s: %.3e (bound %.3e)", "norm drift after 1e5 steps", drift, 1e-15);
     /* The correction only ever removes rounding: a few units of 1e-16 at most. */
-    ak_check(correction < 1e-15, "%s: %.3e (bound %.3e)", "largest norm correction of one step", correction, 1e-15);
+    ak_check(correction < 1e-15,
+             "%s: %.3e (bound %.3e)", "largest norm correction of one step", correction, 1e-15);
     printf("norm after 1e5 steps: | |q| - 1 | = %.3e, largest correction %.3e\n", drift, correction);
     if (ak_check_failures()) {
         printf("%d failure(s)\n", ak_check_failures());

@@ -104,7 +104,8 @@ static void check_rotation(const ak_sequence *seq, const double theta[3], const 
     ak_general_rotation_matrix(seq, theta, R);
     for (int r = 0; r < 3; r++) {
         for (int k = 0; k < 3; k++) {
-            ak_check_close(R[r][k], R_ref[r][k], 1e-15, "%s: R = product of elementary rotations", seq->name);
+            ak_check_close(R[r][k], R_ref[r][k], 1e-15,
+                           "%s: R = product of elementary rotations", seq->name);
             const double RRt = R[r][0] * R[k][0] + R[r][1] * R[k][1] + R[r][2] * R[k][2];
             ak_check_close(RRt, r == k ? 1.0 : 0.0, 1e-15, "%s: R R^T = I", seq->name);
         }
@@ -112,7 +113,8 @@ static void check_rotation(const ak_sequence *seq, const double theta[3], const 
     ak_check_close(det3(R), 1.0, 1e-15, "%s: det R = 1", seq->name);
 
     ak_general_quaternion(seq, theta, q);
-    ak_check_close(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0, 1e-15, "%s: |q| = 1", seq->name);
+    ak_check_close(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0, 1e-15,
+                   "%s: |q| = 1", seq->name);
     ak_check(q[0] >= 0.0, "%s: q0 >= 0", seq->name);
     const double Rq[3][3] = {
         {1 - 2 * (q[2] * q[2] + q[3] * q[3]), 2 * (q[1] * q[2] - q[0] * q[3]), 2 * (q[1] * q[3] + q[0] * q[2])},
@@ -144,26 +146,33 @@ static void check_velocity(const ak_sequence *seq, const double theta[3], const 
         }
     }
     ak_general_angular_kinematics(seq, theta, td, tdd, wf, wb, af, ab);
-    ak_check_close(wf[0], S[2][1], 1e-14 * scale_w, "%s: omega_fixed[1] vs skew(dR/dt R^T)", seq->name);
-    ak_check_close(wf[1], S[0][2], 1e-14 * scale_w, "%s: omega_fixed[2] vs skew(dR/dt R^T)", seq->name);
-    ak_check_close(wf[2], S[1][0], 1e-14 * scale_w, "%s: omega_fixed[3] vs skew(dR/dt R^T)", seq->name);
+    ak_check_close(wf[0], S[2][1], 1e-14 * scale_w,
+                   "%s: omega_fixed[1] vs skew(dR/dt R^T)", seq->name);
+    ak_check_close(wf[1], S[0][2], 1e-14 * scale_w,
+                   "%s: omega_fixed[2] vs skew(dR/dt R^T)", seq->name);
+    ak_check_close(wf[2], S[1][0], 1e-14 * scale_w,
+                   "%s: omega_fixed[3] vs skew(dR/dt R^T)", seq->name);
     transpose_times(R, wf, rotated);
     for (int k = 0; k < 3; k++) {
-        ak_check_close(wb[k], rotated[k], 1e-14 * scale_w, "%s: omega_body = R^T omega_fixed", seq->name);
+        ak_check_close(wb[k], rotated[k], 1e-14 * scale_w,
+                       "%s: omega_body = R^T omega_fixed", seq->name);
     }
     transpose_times(R, af, rotated);
     for (int k = 0; k < 3; k++) {
-        ak_check_close(ab[k], rotated[k], 1e-14 * scale_a, "%s: alpha_body = R^T alpha_fixed", seq->name);
+        ak_check_close(ab[k], rotated[k], 1e-14 * scale_a,
+                       "%s: alpha_body = R^T alpha_fixed", seq->name);
     }
 
     ak_general_partials(seq, theta, td, Wf, Wb, Wfd, Wbd);
     times(Wf, td, x);
     for (int k = 0; k < 3; k++) {
-        ak_check_close(x[k], wf[k], 1e-14 * scale_w, "%s: omega_fixed = W_fixed theta_dot", seq->name);
+        ak_check_close(x[k], wf[k], 1e-14 * scale_w,
+                       "%s: omega_fixed = W_fixed theta_dot", seq->name);
     }
     times(Wb, td, x);
     for (int k = 0; k < 3; k++) {
-        ak_check_close(x[k], wb[k], 1e-14 * scale_w, "%s: omega_body = W_body theta_dot", seq->name);
+        ak_check_close(x[k], wb[k], 1e-14 * scale_w,
+                       "%s: omega_body = W_body theta_dot", seq->name);
     }
     for (int r = 0; r < 3; r++) {
         for (int k = 0; k < 3; k++) {
@@ -180,7 +189,8 @@ static void check_velocity(const ak_sequence *seq, const double theta[3], const 
     const double signed_det = seq->proper_euler
                                   ? (seq->kind == AK_SPACE_FIXED ? 1.0 : -1.0) * sin(theta[1])
                                   : (cyclic ? 1.0 : -1.0) * cos(theta[1]);
-    ak_check_close(det3(Wf), signed_det, 1e-15, "%s: det W_fixed = eps cos theta2 or -+sin theta2", seq->name);
+    ak_check_close(det3(Wf), signed_det, 1e-15,
+                   "%s: det W_fixed = eps cos theta2 or -+sin theta2", seq->name);
     ak_check_close(fabs(det3(Wb)), d, 1e-15, "%s: |det W_body| = distance", seq->name);
 
     /* Along theta(t) = theta + td t + tdd t^2 / 2: alpha = d(omega)/dt and W_dot = dW/dt,
@@ -206,11 +216,15 @@ static void check_velocity(const ak_sequence *seq, const double theta[3], const 
         }
     }
     for (int r = 0; r < 3; r++) {
-        ak_check_close(af[r], dwf[r], 1e-7 * scale_a, "%s: alpha_fixed = d(omega_fixed)/dt", seq->name);
-        ak_check_close(ab[r], dwb[r], 1e-7 * scale_a, "%s: alpha_body = d(omega_body)/dt", seq->name);
+        ak_check_close(af[r], dwf[r], 1e-7 * scale_a,
+                       "%s: alpha_fixed = d(omega_fixed)/dt", seq->name);
+        ak_check_close(ab[r], dwb[r], 1e-7 * scale_a,
+                       "%s: alpha_body = d(omega_body)/dt", seq->name);
         for (int k = 0; k < 3; k++) {
-            ak_check_close(Wfd[r][k], dWf[r][k], 1e-7 * scale_w, "%s: W_fixed_dot = d(W_fixed)/dt", seq->name);
-            ak_check_close(Wbd[r][k], dWb[r][k], 1e-7 * scale_w, "%s: W_body_dot = d(W_body)/dt", seq->name);
+            ak_check_close(Wfd[r][k], dWf[r][k], 1e-7 * scale_w,
+                           "%s: W_fixed_dot = d(W_fixed)/dt", seq->name);
+            ak_check_close(Wbd[r][k], dWb[r][k], 1e-7 * scale_w,
+                           "%s: W_body_dot = d(W_body)/dt", seq->name);
         }
     }
 }
@@ -234,10 +248,14 @@ static void check_round_trip(const ak_sequence *seq, const double theta[3], cons
             continue;
         }
         for (int k = 0; k < 3; k++) {
-            ak_check_close(td_back[k], td[k], 1e-14 * scale_w / d, "%s: round trip: theta_dot", seq->name);
-            ak_check_close(tdd_back[k], tdd[k], 1e-14 * scale_a / (d * d), "%s: round trip: theta_ddot", seq->name);
-            ak_check_close(af_back[k], af[k], 1e-14 * scale_a, "%s: round trip: alpha_fixed", seq->name);
-            ak_check_close(ab_back[k], ab[k], 1e-14 * scale_a, "%s: round trip: alpha_body", seq->name);
+            ak_check_close(td_back[k], td[k], 1e-14 * scale_w / d,
+                           "%s: round trip: theta_dot", seq->name);
+            ak_check_close(tdd_back[k], tdd[k], 1e-14 * scale_a / (d * d),
+                           "%s: round trip: theta_ddot", seq->name);
+            ak_check_close(af_back[k], af[k], 1e-14 * scale_a,
+                           "%s: round trip: alpha_fixed", seq->name);
+            ak_check_close(ab_back[k], ab[k], 1e-14 * scale_a,
+                           "%s: round trip: alpha_body", seq->name);
         }
     }
 }
@@ -253,10 +271,12 @@ static void check_singularity(const ak_sequence *seq) {
             for (int f = 0; f < 2; f++) {
                 const ak_rates_status status = ak_general_euler_rates(
                     seq, f ? AK_FRAME_BODY : AK_FRAME_FIXED, theta, omega, omega_dot, 1e-6, td, tdd, af, ab, &d);
-                ak_check(status == AK_RATES_SINGULAR, "%s: at the singular angle: AK_RATES_SINGULAR", seq->name);
+                ak_check(status == AK_RATES_SINGULAR,
+                         "%s: at the singular angle: AK_RATES_SINGULAR", seq->name);
                 ak_check(d < 1e-14, "%s: at the singular angle: distance below 1e-14", seq->name);
                 ak_check(td[0] == 7 && td[1] == 7 && td[2] == 7 && tdd[0] == 7 && tdd[2] == 7 &&
-                          af[1] == 7 && ab[1] == 7, "%s: at the singular angle: outputs untouched", seq->name);
+                         af[1] == 7 && ab[1] == 7,
+                         "%s: at the singular angle: outputs untouched", seq->name);
             }
         }
         /* Inside the tolerance: computed, flagged. */
@@ -264,11 +284,13 @@ static void check_singularity(const ak_sequence *seq) {
         double td[3], tdd[3], af[3], ab[3], d;
         ak_rates_status status = ak_general_euler_rates(seq, AK_FRAME_FIXED, theta, omega, omega_dot,
                                                         1e-6, td, tdd, af, ab, &d);
-        ak_check(status == AK_RATES_NEAR_SINGULAR, "%s: 1e-8 from singular: AK_RATES_NEAR_SINGULAR", seq->name);
+        ak_check(status == AK_RATES_NEAR_SINGULAR,
+                 "%s: 1e-8 from singular: AK_RATES_NEAR_SINGULAR", seq->name);
         ak_check_close(d, 1e-8, 1e-15, "%s: 1e-8 from singular: distance", seq->name);
         status = ak_general_euler_rates(seq, AK_FRAME_FIXED, theta, omega, omega_dot, 1e-9, td, tdd,
                                         af, ab, &d);
-        ak_check(status == AK_RATES_OK, "%s: 1e-8 from singular, tolerance 1e-9: AK_RATES_OK", seq->name);
+        ak_check(status == AK_RATES_OK,
+                 "%s: 1e-8 from singular, tolerance 1e-9: AK_RATES_OK", seq->name);
         /* Far from the singularity but the result overflows: refused, nothing written. */
         const double far[3] = {0.4, singular[n] + 1e-3, -1.1}, huge[3] = {1e300, -1e300, 1e300};
         td[0] = 7;
@@ -287,13 +309,19 @@ static void check_table(void) {
                  seq->axes[0], seq->axes[1], seq->axes[2]);
         ak_check(strcmp(name, seq->name) == 0, "%s: name says kind and axes", seq->name);
         ak_check(ak_sequence_index(seq->name) == i, "%s: index of name", seq->name);
-        ak_check(seq->axes[0] != seq->axes[1] && seq->axes[1] != seq->axes[2], "%s: consecutive axes differ", seq->name);
-        ak_check(seq->proper_euler == (seq->axes[0] == seq->axes[2]), "%s: proper_euler flag", seq->name);
-        ak_check((i < 12) == (seq->kind == AK_BODY_FIXED), "%s: body-fixed first, then space-fixed", seq->name);
-        ak_check((i % 12 < 6) == !seq->proper_euler, "%s: Tait-Bryan first in each half", seq->name);
+        ak_check(seq->axes[0] != seq->axes[1] && seq->axes[1] != seq->axes[2],
+                 "%s: consecutive axes differ", seq->name);
+        ak_check(seq->proper_euler == (seq->axes[0] == seq->axes[2]),
+                 "%s: proper_euler flag", seq->name);
+        ak_check((i < 12) == (seq->kind == AK_BODY_FIXED),
+                 "%s: body-fixed first, then space-fixed", seq->name);
+        ak_check((i % 12 < 6) == !seq->proper_euler,
+                 "%s: Tait-Bryan first in each half", seq->name);
     }
-    ak_check(strcmp(AK_SEQUENCES[AK_SEQUENCE_DEFAULT].name, "body123") == 0, "%s: default is body123", "table");
-    ak_check(ak_sequence_index("body111") == -1 && ak_sequence_index(NULL) == -1, "%s: unknown name", "table");
+    ak_check(strcmp(AK_SEQUENCES[AK_SEQUENCE_DEFAULT].name, "body123") == 0,
+             "%s: default is body123", "table");
+    ak_check(ak_sequence_index("body111") == -1 && ak_sequence_index(NULL) == -1,
+             "%s: unknown name", "table");
 }
 
 /* The general core for body123 against the hand-written 1-2-3 core; worst scaled difference. */
@@ -309,7 +337,8 @@ static void check_body123_matches_core(const double theta[3], const double td[3]
     for (int n = 0; n < 4; n++) {
         for (int k = 0; k < 3; k++) {
             const double scale = n < 2 ? scale_w : scale_a;
-            ak_check_close(g[n][k], h[n][k], 1.5e-15 * scale, "%s: general core = ak_angular_kinematics_123", "body123");
+            ak_check_close(g[n][k], h[n][k], 1.5e-15 * scale,
+                           "%s: general core = ak_angular_kinematics_123", "body123");
             if (fabs(g[n][k] - h[n][k]) / scale > worst_body123_difference) {
                 worst_body123_difference = fabs(g[n][k] - h[n][k]) / scale;
             }
@@ -319,7 +348,8 @@ static void check_body123_matches_core(const double theta[3], const double td[3]
     ak_rotation_matrix_123(theta, Rh);
     for (int r = 0; r < 3; r++) {
         for (int k = 0; k < 3; k++) {
-            ak_check_close(Rg[r][k], Rh[r][k], 1e-15, "%s: general R = ak_rotation_matrix_123", "body123");
+            ak_check_close(Rg[r][k], Rh[r][k], 1e-15,
+                           "%s: general R = ak_rotation_matrix_123", "body123");
         }
     }
 }
@@ -340,8 +370,10 @@ static void check_shared_sines(const ak_sequence *seq, const double theta[3], co
     ak_general_angular_kinematics(seq, theta, td, tdd, own, own + 3, own + 6, own + 9);
     ak_general_angular_kinematics(&copy, theta, td, tdd, generic, generic + 3, generic + 6,
                                   generic + 9);
-    ak_check(memcmp(shared, own, sizeof own) == 0, "%s: omega, alpha from shared sines bit-identical", seq->name);
-    ak_check(memcmp(shared, generic, sizeof generic) == 0, "%s: omega, alpha of the table entry and of a copy bit-identical", seq->name);
+    ak_check(memcmp(shared, own, sizeof own) == 0,
+             "%s: omega, alpha from shared sines bit-identical", seq->name);
+    ak_check(memcmp(shared, generic, sizeof generic) == 0,
+             "%s: omega, alpha of the table entry and of a copy bit-identical", seq->name);
 
     ak_rotation_outputs all, all_generic, one;
     ak_general_rotation_outputs(seq, &sines, &half, td, &all);
@@ -349,8 +381,10 @@ static void check_shared_sines(const ak_sequence *seq, const double theta[3], co
     ak_general_rotation_matrix(seq, theta, one.R);
     ak_general_quaternion(seq, theta, one.q);
     ak_general_partials(seq, theta, td, one.W_fixed, one.W_body, one.W_fixed_dot, one.W_body_dot);
-    ak_check(memcmp(&all, &one, sizeof one) == 0, "%s: R, q, W, W_dot at once bit-identical to one by one", seq->name);
-    ak_check(memcmp(&all, &all_generic, sizeof all) == 0, "%s: R, q, W, W_dot of the table entry and of a copy bit-identical", seq->name);
+    ak_check(memcmp(&all, &one, sizeof one) == 0,
+             "%s: R, q, W, W_dot at once bit-identical to one by one", seq->name);
+    ak_check(memcmp(&all, &all_generic, sizeof all) == 0,
+             "%s: R, q, W, W_dot of the table entry and of a copy bit-identical", seq->name);
 }
 
 /* ak_half_angle_sines: sin and cos of the half angle in [-pi/2, pi/2] (theta / 2, or theta / 2 +
@@ -369,9 +403,11 @@ static void check_half_angles(double x) {
         const double s = sin(h), c = cos(h);
         const double d = fmax(fabs(half.sin[k] - s), fabs(half.cos[k] - c));
         worst_half_angle_difference = fmax(worst_half_angle_difference, d);
-        ak_check(d <= 4.5e-16, "%s: ak_half_angle_sines = sin, cos of the half angle", "half angles");
+        ak_check(d <= 4.5e-16,
+                 "%s: ak_half_angle_sines = sin, cos of the half angle", "half angles");
         ak_check(half.cos[k] >= 0.0, "%s: cos of the half angle >= 0", "half angles");
-        ak_check(fabs(half.sin[k] * half.sin[k] + half.cos[k] * half.cos[k] - 1.0) <= 4.5e-16, "%s: sin^2 + cos^2 = 1", "half angles");
+        ak_check(fabs(half.sin[k] * half.sin[k] + half.cos[k] * half.cos[k] - 1.0) <= 4.5e-16,
+                 "%s: sin^2 + cos^2 = 1", "half angles");
     }
 }
 

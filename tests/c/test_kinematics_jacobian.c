@@ -63,7 +63,8 @@ static void check_jacobian(const double u[N_IN], double scale) {
             /* d y / d u scales as (scale of y) / (scale of u). */
             const double y_scale = i < 6 ? scale : scale * scale;
             const double u_scale = j < 3 ? 1.0 : (j < 6 ? scale : scale * scale);
-            ak_check_close(J[i][j], fd, 1e-8 * y_scale / u_scale, "J vs finite difference [%d][%d]", i, j);
+            ak_check_close(J[i][j], fd, 1e-8 * y_scale / u_scale,
+                           "J vs finite difference [%d][%d]", i, j);
             if (!DEPENDS[i][j]) {
                 ak_check_close(J[i][j], 0.0, 0.0, "structural zero [%d][%d]", i, j);
             }
@@ -98,7 +99,8 @@ static void check_jerk(const double u[N_IN], const double tddd[3], double scale)
     for (int k = 0; k < 3; k++) {
         const double dfixed = (y[0][6 + k] - 8 * y[1][6 + k] + 8 * y[2][6 + k] - y[3][6 + k]) / (12 * h);
         const double dbody = (y[0][9 + k] - 8 * y[1][9 + k] + 8 * y[2][9 + k] - y[3][9 + k]) / (12 * h);
-        ak_check_close(jf[k], dfixed, 1e-7 * pow(scale, 3), "jerk_fixed vs d(alpha_fixed)/dt [%d]", k);
+        ak_check_close(jf[k], dfixed, 1e-7 * pow(scale, 3),
+                       "jerk_fixed vs d(alpha_fixed)/dt [%d]", k);
         ak_check_close(jb[k], dbody, 1e-7 * pow(scale, 3), "jerk_body vs d(alpha_body)/dt [%d]", k);
     }
 }
