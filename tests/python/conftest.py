@@ -1,10 +1,12 @@
 """Shared fixtures: the built FMU, its model description, and instances driven through fmpy with
 their log messages captured."""
+import atexit
 import ctypes
 import functools
 import json
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -113,8 +115,9 @@ def fmu_files(model):
     test process: every FMI 2 instance of the model is made from them."""
     path = fmu_path_of(model)
     assert path.is_file(), f"{path} is missing: build it first (bash scripts/build.sh)"
-    return (extract(str(path), unzipdir=tempfile.mkdtemp(prefix=f"{model}2_")),
-            read_model_description(str(path)))
+    folder = tempfile.mkdtemp(prefix=f"{model}2_")
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    return extract(str(path), unzipdir=folder), read_model_description(str(path))
 
 
 @pytest.fixture(scope="session")
