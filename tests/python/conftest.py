@@ -221,6 +221,13 @@ def new_instance():
         instance.free()
 
 
+@pytest.fixture(params=[2, 3], ids=["fmi2", "fmi3"])
+def layer(request):
+    """Each FMI layer in turn (fmi_layers.Layer), for the concerns both share."""
+    from fmi_layers import Layer
+    return Layer(request.param)
+
+
 @pytest.fixture
 def make_model_instance(model, new_instance):
     """FMI 2 instances of the `model` under test (new_instance)."""

@@ -49,19 +49,25 @@ def call_set_real(instance, vrs, values):
 
 
 @pytest.mark.parametrize("bad", NON_FINITE)
-def test_non_finite_input_is_refused(bad, model, make_model_instance):
-    for name in model.inputs:
-        instance, before = initialized(make_model_instance, model)
-        first, vr = instance.vr[model.inputs[0]], instance.vr[name]
-        # The bad value last in a call that also sets a good one: the good one must not be applied either.
-        assert call_set_real(instance, [first, vr], [2.5, bad]) == 3
+def test_non_finite_input_is_refused(bad, layer, model, new_instance):
+    """Each input element in turn, in a set call that also sets a good value: refused with one
+    error naming the function, the element and the value; the good value is not applied either,
+    nothing changes, and the instance goes on (both layers)."""
+    for index in range(len(model.inputs)):
+        instance = layer.started(new_instance, model, "target")
+        before = layer.values(instance)
+        status, name, function = layer.set_one_bad_input(instance, index, bad)
+        assert status == 3
         message = the_one_error(instance)
-        assert message.startswith("fmi2SetReal: "), message
-        assert f"{name} = {bad:g} (vr[1] = {vr})" in message and "not finite" in message, message
-        assert agrees_with_c_row(model, f"fmi2SetReal(c, {{{first}, {vr}}}, 2, {{2.5, {c_number(bad)}}})",
-                                 message)
-        assert unchanged(instance, model, before)
-        assert instance.call("fmi2DoStep", 0.0, 0.1, 1) == 0  # the instance goes on
+        assert message.startswith(f"{function}: "), message
+        assert name in message and f"{bad:g}" in message, message
+        if layer.version == 2:
+            first, vr = instance.vr[model.inputs[0]], instance.vr[name]
+            assert f"{name} = {bad:g} (vr[1] = {vr})" in message and "not finite" in message, message
+            assert agrees_with_c_row(model, f"fmi2SetReal(c, {{{first}, {vr}}}, 2, "
+                                            f"{{2.5, {c_number(bad)}}})", message)
+        assert layer.values(instance) == before
+        assert layer.step(instance, 0.25, 0.1) == (0, 0.35)  # the instance goes on
         instance.free()
 
 

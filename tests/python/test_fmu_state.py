@@ -15,6 +15,7 @@ from fmpy.fmi2 import fmi2FMUstate
 
 import reference
 from conftest import description_path_of, fmu_state_size, value_references_of
+from fmi_layers import observable, set_derivatives
 
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
 OTHER = dict(zip(reference.INPUT_NAMES, [-1.0, 1.5, 0.2, 4.0, 0.1, -0.3, 0.0, 9.0, -2.0]))
@@ -27,21 +28,6 @@ DERIVATIVES = 88 + 8 * N_VALUES  # where the input derivatives begin
 CRC = SIZE - 4
 SEQUENCE = value_references_of("AngularKinematics")["sequence"]
 GUID = ET.parse(description_path_of("AngularKinematics")).getroot().get("guid").encode()
-
-
-def set_derivatives(instance, derivatives):
-    """fmi2SetRealInputDerivatives of order 1 for the named inputs."""
-    names = list(derivatives)
-    vr = (ctypes.c_uint * len(names))(*[instance.vr[n] for n in names])
-    order = (ctypes.c_int * len(names))(*([1] * len(names)))
-    value = (ctypes.c_double * len(names))(*derivatives.values())
-    return instance.call("fmi2SetRealInputDerivatives", vr, len(names), order, value)
-
-
-def observable(instance):
-    """The names of every Real input and output of the instance's model."""
-    return [v.name for v in instance.model_description.modelVariables
-            if v.type == "Real" and v.causality in ("input", "output")]
 
 
 def snapshot(instance):
@@ -91,100 +77,6 @@ def test_rollback_restores_time_values_and_input_derivatives(model, make_model_i
     assert np.array_equal(stepping(instance, 0.2, 5), future)
     instance.fmu.freeFMUstate(state)
     assert state.value is None
-
-
-class Layer:
-    """The FMU-state functions of one FMI version (same arguments in both), called raw, and what
-    the tests need around them: an instance started with inputs, its inputs and outputs as bits,
-    a step."""
-
-    def __init__(self, version):
-        self.version = version
-        fmi = f"fmi{version}"
-        self.get, self.set, self.free = (f"{fmi}GetFMU{self.state_word}", f"{fmi}SetFMU{self.state_word}",
-                                         f"{fmi}FreeFMU{self.state_word}")
-        self.size = f"{fmi}SerializedFMU{self.state_word}Size"
-        self.serialize = f"{fmi}SerializeFMU{self.state_word}"
-        self.deserialize = "fmi2DeSerializeFMUstate" if version == 2 else "fmi3DeserializeFMUState"
-        self.magic = b"AKinFMUs" if version == 2 else b"AKinFMU3"
-        self.byte = ctypes.c_char if version == 2 else ctypes.c_uint8  # fmi2Byte, fmi3Byte
-
-    @property
-    def state_word(self):
-        return "state" if self.version == 2 else "State"
-
-    def __repr__(self):
-        return f"FMI {self.version}"
-
-    def expected_size(self, model):
-        """92 bytes of header and CRC, 8 per value reference; FMI 2 also 16 (two input
-        derivatives) per input."""
-        derivatives = 16 * len(model.inputs) if self.version == 2 else 0
-        assert len(model.c_table["variables"]) == model.largest_vr + 1  # no gap
-        return 92 + 8 * len(model.c_table["variables"]) + derivatives
-
-    def input_names(self, instance):
-        return [v.name for v in instance.model_description.modelVariables if v.causality == "input"] \
-            if self.version == 2 else instance.inputs()
-
-    def set_inputs(self, instance, flat):
-        """Every input from one flat vector, in value-reference order; the status."""
-        names = self.input_names(instance)
-        if self.version == 2:
-            return instance.set(dict(zip(names, flat)))
-        ends = np.cumsum([instance.size[n] for n in names])[:-1]
-        return instance.set(dict(zip(names, np.split(np.asarray(flat, dtype=float), ends))))
-
-    def started(self, new_instance, model, name):
-        """Initialized with sequence 11 and the model's valid inputs (FMI 2: three input
-        derivatives too, as running()), stop time 10, stepped to t = 0.25."""
-        instance = new_instance(model.name, name=name, fmi_version=self.version)
-        instance.initialize(stop_time=10.0, parameters={"sequence": 11})
-        assert self.set_inputs(instance, list(model.valid_inputs.values())) == 0
-        if self.version == 2:
-            names = model.inputs
-            assert set_derivatives(instance, {names[0]: 0.5, names[len(names) // 2]: -1.0,
-                                              names[-1]: 2.0}) == 0
-        assert self.step(instance, 0.0, 0.25) == (0, 0.25)
-        return instance
-
-    def values(self, instance):
-        """The bits of every input and output (FMI 2: and of the last successful time)."""
-        if self.version == 2:
-            time = np.array([instance.fmu.getRealStatus(2)])  # fmi2LastSuccessfulTime
-            return np.concatenate([time, instance.get(observable(instance))]).view(np.uint64).tolist()
-        values = instance.get(instance.inputs() + instance.outputs())
-        return np.concatenate(list(values.values())).view(np.uint64).tolist()
-
-    def step(self, instance, t, h):
-        """(status, the instance's time after the step)."""
-        if self.version == 3:
-            return instance.do_step(t, h)
-        status = instance.call("fmi2DoStep", ctypes.c_double(t), ctypes.c_double(h), 1)
-        return status, instance.fmu.getRealStatus(2)  # fmi2LastSuccessfulTime
-
-    def get_state(self, instance, state=None):
-        state = ctypes.c_void_p() if state is None else state
-        assert instance.call(self.get, ctypes.byref(state)) == 0
-        return state
-
-    def serialized(self, instance, state):
-        size = ctypes.c_size_t()
-        assert instance.call(self.size, state, ctypes.byref(size)) == 0
-        buffer = (self.byte * size.value)()
-        assert instance.call(self.serialize, state, buffer, size.value) == 0
-        return bytes(buffer)
-
-    def deserialized(self, instance, data):
-        """(status, state) of deserializing the bytes."""
-        state = ctypes.c_void_p()
-        buffer = (self.byte * max(len(data), 1)).from_buffer_copy(data or b"\0")
-        return instance.call(self.deserialize, buffer, len(data), ctypes.byref(state)), state
-
-
-@pytest.fixture(params=[2, 3], ids=["fmi2", "fmi3"])
-def layer(request):
-    return Layer(request.param)
 
 
 def test_state_restores_everything_bit_for_bit_also_in_another_instance(layer, model, new_instance,
