@@ -132,3 +132,22 @@ class Layer:
         values[arrays[which]] = [2.5] * instance.size[arrays[which]]
         values[arrays[which]][element] = bad
         return instance.set(values), f"{arrays[which]}[{element + 1}]", "fmi3SetFloat64"
+
+    def output_names(self, instance):
+        """FMI 2: every output scalar; FMI 3: every output array."""
+        return [v.name for v in instance.model_description.modelVariables if v.causality == "output"] \
+            if self.version == 2 else instance.outputs()
+
+    def size_of(self, instance, name):
+        return 1 if self.version == 2 else instance.size[name]
+
+    def real_call(self, instance, function, vrs, n_values, value=7.0):
+        """fmi2SetReal/fmi2GetReal or fmi3SetFloat64/fmi3GetFloat64 ("Set" or "Get") of the
+        value references with n_values values, all `value`; (status, the values after, the
+        function's name)."""
+        name = f"fmi2{function}Real" if self.version == 2 else f"fmi3{function}Float64"
+        refs = (ctypes.c_uint * len(vrs))(*vrs)
+        values = (ctypes.c_double * n_values)(*[value] * n_values)
+        if self.version == 2:
+            return instance.call(name, refs, len(vrs), values), list(values), name
+        return instance.call(name, refs, len(vrs), values, n_values), list(values), name
