@@ -72,7 +72,7 @@ class Layer:
         if self.version == 2:
             names = model.inputs
             assert set_derivatives(instance, {names[0]: 0.5, names[len(names) // 2]: -1.0,
-                                                   names[-1]: 2.0}) == 0
+                                              names[-1]: 2.0}) == 0
         assert self.step(instance, 0.0, 0.25) == (0, 0.25)
         return instance
 
