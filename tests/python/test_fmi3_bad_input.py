@@ -42,7 +42,8 @@ def sensitivity(instance, function, unknowns, knowns, seed, n_sens):
 
 
 # (name, model, call on an initialized co-simulation instance, words the message must hold);
-# non-finite inputs, outputs set, unknown value references: test_bad_input.py, over both layers.
+# non-finite inputs, outputs set, unknown value references (test_bad_input.py) and bad arguments
+# of fmi3GetDirectionalDerivative (test_directional_derivatives.py): over both layers.
 CASES = [
     ("too few values", "AngularKinematics", lambda i: f64(i, [0], [0.1, 0.2]),
      ["fmi3SetFloat64", "nValues = 2", "theta", "3 elements", "too few"]),
@@ -93,12 +94,6 @@ CASES = [
      lambda i: i.call("fmi3GetOutputDerivatives", vrs([0]), 1, (ctypes.c_int32 * 1)(1),
                       doubles([0] * 3), 3),
      ["fmi3GetOutputDerivatives", "theta", "an input; expected an output"]),
-    ("derivative w.r.t. an output", "AngularKinematics",
-     lambda i: sensitivity(i, "fmi3GetDirectionalDerivative", [9], [12], [1, 0, 0], 3),
-     ["fmi3GetDirectionalDerivative", "knowns[0] = 12", "omega_body"]),
-    ("NaN seed", "AngularKinematics",
-     lambda i: sensitivity(i, "fmi3GetDirectionalDerivative", [9], [0], [1, math.nan, 0], 3),
-     ["fmi3GetDirectionalDerivative", "seed[1] = nan"]),
     ("wrong nSeed", "AngularKinematics",
      lambda i: sensitivity(i, "fmi3GetAdjointDerivative", [9], [0], [1, 0], 3),
      ["fmi3GetAdjointDerivative", "nSeed = 2", "omega_fixed"]),
