@@ -1,18 +1,13 @@
 # The abuse tests (docs/abuse_testing.md): C programs that link an FMU's own sources and play the
-# master, one set per model. Built in every Linux build folder; instrumented when AK_SANITIZE is
-# set (cmake/sanitizers.cmake). The AngularKinematics programs keep the plain names
-# (build/test_fmi2_calls ...), the others end in _<Model> (build/test_fmi2_calls_EulerRates).
+# master, one set per model, each program named for its model (build/test_fmi2_calls_<Model>).
+# Built in every Linux build folder; instrumented when AK_SANITIZE is set
+# (cmake/sanitizers.cmake).
 find_package(Threads REQUIRED)
 
-# ak_add_abuse_tests(<model> <rows file> [CALLS_ONLY]): CALLS_ONLY builds the call driver
-# test_fmi2_calls (its bad-input table) and not the many-instance, soak and fuzz programs.
+# ak_add_abuse_tests(<model> <rows file>): the call driver test_fmi2_calls_<Model> (its bad-input
+# table), the many-instance and soak programs and, in a fuzz build, the fuzzer fuzz_fmi2_<Model>.
 function(ak_add_abuse_tests model rows_source)
-  cmake_parse_arguments(_ARG "CALLS_ONLY" "" "" ${ARGN})
-  if(model STREQUAL "AngularKinematics")
-    set(_suffix "")
-  else()
-    set(_suffix "_${model}")
-  endif()
+  set(_suffix "_${model}")
   # The FMU's sources, compiled once more as a static library the test programs link.
   add_library(ak_fmu_for_tests_${model} STATIC ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${model}}
                                               ${AK_FMI2_SOURCES})
@@ -37,42 +32,35 @@ function(ak_add_abuse_tests model rows_source)
   target_link_libraries(ak_test_master_${model} PUBLIC ak_fmu_for_tests_${model}
                                                       kinematics_123_reference)
 
-  if(NOT AK_FUZZ)
-    add_executable(test_fmi2_calls${_suffix} tests/c/test_fmi2_calls.c)
-    target_compile_options(test_fmi2_calls${_suffix} PRIVATE ${AK_WARNINGS})
-    target_link_libraries(test_fmi2_calls${_suffix} PRIVATE ak_test_master_${model})
-    add_test(NAME fmi2_calls_${model} COMMAND test_fmi2_calls${_suffix})
-  endif()
-  if(_ARG_CALLS_ONLY)
-    return()
-  endif()
-  if(NOT AK_FUZZ)
-    add_executable(test_fmi2_instances${_suffix} tests/c/test_fmi2_instances.c)
-    target_compile_options(test_fmi2_instances${_suffix} PRIVATE ${AK_WARNINGS})
-    target_link_libraries(test_fmi2_instances${_suffix} PRIVATE ak_test_master_${model}
-                                                                Threads::Threads)
-    add_test(NAME fmi2_instances_${model} COMMAND test_fmi2_instances${_suffix} 1000 4 20)
-
-    add_executable(soak_fmi2${_suffix} tests/c/soak_fmi2.c)
-    target_compile_options(soak_fmi2${_suffix} PRIVATE ${AK_WARNINGS})
-    target_link_libraries(soak_fmi2${_suffix} PRIVATE ak_test_master_${model})
-    add_test(NAME fmi2_soak_short_${model} COMMAND soak_fmi2${_suffix} 100000)
-  else()
+  if(AK_FUZZ)
     add_executable(fuzz_fmi2${_suffix} tests/c/fuzz_fmi2.c)
     target_compile_options(fuzz_fmi2${_suffix} PRIVATE ${AK_WARNINGS})
     target_link_libraries(fuzz_fmi2${_suffix} PRIVATE ak_test_master_${model})
     target_link_options(fuzz_fmi2${_suffix} PRIVATE -fsanitize=fuzzer)
+    return()
   endif()
+  add_executable(test_fmi2_calls${_suffix} tests/c/test_fmi2_calls.c)
+  target_compile_options(test_fmi2_calls${_suffix} PRIVATE ${AK_WARNINGS})
+  target_link_libraries(test_fmi2_calls${_suffix} PRIVATE ak_test_master_${model})
+  add_test(NAME fmi2_calls_${model} COMMAND test_fmi2_calls${_suffix})
+
+  add_executable(test_fmi2_instances${_suffix} tests/c/test_fmi2_instances.c)
+  target_compile_options(test_fmi2_instances${_suffix} PRIVATE ${AK_WARNINGS})
+  target_link_libraries(test_fmi2_instances${_suffix} PRIVATE ak_test_master_${model}
+                                                              Threads::Threads)
+  add_test(NAME fmi2_instances_${model} COMMAND test_fmi2_instances${_suffix} 1000 4 20)
+
+  add_executable(soak_fmi2${_suffix} tests/c/soak_fmi2.c)
+  target_compile_options(soak_fmi2${_suffix} PRIVATE ${AK_WARNINGS})
+  target_link_libraries(soak_fmi2${_suffix} PRIVATE ak_test_master_${model})
+  add_test(NAME fmi2_soak_short_${model} COMMAND soak_fmi2${_suffix} 100000)
 endfunction()
 
 ak_add_abuse_tests(AngularKinematics fmi2_bad_input_angular_kinematics.c)
 ak_add_abuse_tests(EulerRates fmi2_bad_input_euler_rates.c)
-
-# AttitudePropagator (the first model with continuous states, 6 inputs): the call driver and its
-# bad-input table like the others; for many instances in threads and random calls with bad
-# arguments in both interfaces, its own abuse program (tests/c/abuse_attitude.c) until the
-# many-instance, soak and fuzz programs above cover it.
-ak_add_abuse_tests(AttitudePropagator fmi2_bad_input_attitude_propagator.c CALLS_ONLY)
+ak_add_abuse_tests(AttitudePropagator fmi2_bad_input_attitude_propagator.c)
+# Random calls with bad arguments in both interfaces on many threads, for the model with
+# continuous states (tests/c/abuse_attitude.c).
 if(NOT AK_FUZZ)
   add_executable(abuse_attitude tests/c/abuse_attitude.c)
   target_compile_options(abuse_attitude PRIVATE ${AK_WARNINGS})

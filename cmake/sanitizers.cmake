@@ -1,7 +1,7 @@
 # Instrumented builds for the abuse tests (docs/abuse_testing.md), one build folder each:
 #   -DAK_SANITIZE=address,undefined   AddressSanitizer + UndefinedBehaviorSanitizer
 #   -DAK_SANITIZE=thread              ThreadSanitizer
-#   -DAK_SANITIZE=fuzzer              libFuzzer + ASan + UBSan (clang only; build target fuzz_fmi2)
+#   -DAK_SANITIZE=fuzzer              libFuzzer + ASan + UBSan (clang only; build targets fuzz_fmi2_<Model>)
 # Every target of the folder is instrumented, the FMU's code included. Any report is fatal
 # (-fno-sanitize-recover), so a run that finishes is a run without findings.
 set(AK_SANITIZE "" CACHE STRING "Sanitizers for every target: address,undefined | thread | fuzzer")

@@ -12,11 +12,8 @@ BUILD = ROOT / "build"
 
 
 def driver(model):
-    """build/test_fmi2_calls_<Model>; or build/test_fmi2_calls while cmake/abuse_tests.cmake still
-    gives one model's programs the plain names: for the one model without a suffixed program."""
-    suffixed = BUILD / f"test_fmi2_calls_{model}"
-    unsuffixed = [m for m in MODELS if not (BUILD / f"test_fmi2_calls_{m}").is_file()]
-    return suffixed if suffixed.is_file() or unsuffixed != [model] else BUILD / "test_fmi2_calls"
+    """build/test_fmi2_calls_<Model> (cmake/abuse_tests.cmake)."""
+    return BUILD / f"test_fmi2_calls_{model}"
 
 
 def why_not_here():

@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
-# Runs the C tests of the FMI layers (test_fmi2_calls, test_fmi2_instances, soak_fmi2, each built
-# for AngularKinematics, and EulerRates with the suffix _EulerRates; test_fmi2_calls_AttitudePropagator
-# and abuse_attitude for AttitudePropagator; fmi3_abuse_<Model>
-# for the FMI 3 layer; and the core's test_kinematics) under AddressSanitizer + UndefinedBehaviorSanitizer, ThreadSanitizer and
+# Runs the C tests of the FMI layers (test_fmi2_calls_<Model>, test_fmi2_instances_<Model>,
+# soak_fmi2_<Model> and fmi3_abuse_<Model> for every model, abuse_attitude for AttitudePropagator;
+# and the core's test_kinematics) under AddressSanitizer + UndefinedBehaviorSanitizer, ThreadSanitizer and
 # valgrind memcheck, and the pytest suite through fmpy with both FMUs built with ASan+UBSan. Any
 # report fails the run. docs/abuse_testing.md explains what each proves.
 #
@@ -49,22 +48,18 @@ per_model() { # prefix: prefix<Model> for every model
   for model in $models; do printf '%s%s ' "$1" "$model"; done
 }
 
-programs="test_fmi2_calls test_fmi2_instances soak_fmi2 test_fmi2_calls_EulerRates
-  test_fmi2_instances_EulerRates soak_fmi2_EulerRates $(per_model fmi3_abuse_)
-  test_fmi2_calls_AttitudePropagator"
+programs="$(per_model test_fmi2_calls_) $(per_model test_fmi2_instances_) $(per_model soak_fmi2_)
+  $(per_model fmi3_abuse_)"
 echo "=== AddressSanitizer + UndefinedBehaviorSanitizer (gcc, build-asan/)"
 # shellcheck disable=SC2086
 configure_and_build asan $programs test_kinematics test_attitude abuse_attitude
 run asan+ubsan build-asan/test_kinematics
 run asan+ubsan build-asan/test_attitude
 run asan+ubsan build-asan/abuse_attitude 4 50 "$steps" "$soak"
-run asan+ubsan build-asan/test_fmi2_calls_AttitudePropagator
-for suffix in "" _EulerRates; do
-  run asan+ubsan "build-asan/test_fmi2_calls$suffix"
-  run asan+ubsan "build-asan/test_fmi2_instances$suffix" 1000 4 "$steps"
-  run asan+ubsan "build-asan/soak_fmi2$suffix" "$soak" --no-rss-check
-done
-for model in $models; do # the FMI 3 layer (tests/c/fmi3_abuse.c)
+for model in $models; do # the FMI 2 layer, then the FMI 3 layer (tests/c/fmi3_abuse.c)
+  run asan+ubsan "build-asan/test_fmi2_calls_$model"
+  run asan+ubsan "build-asan/test_fmi2_instances_$model" 1000 4 "$steps"
+  run asan+ubsan "build-asan/soak_fmi2_$model" "$soak" --no-rss-check
   run asan+ubsan "build-asan/fmi3_abuse_$model" calls
   run asan+ubsan "build-asan/fmi3_abuse_$model" instances 1000 4 "$steps"
   run asan+ubsan "build-asan/fmi3_abuse_$model" soak "$soak"
@@ -100,14 +95,11 @@ AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asa
 
 echo "=== ThreadSanitizer (gcc, build-tsan/)"
 # shellcheck disable=SC2046
-configure_and_build tsan test_fmi2_instances test_fmi2_instances_EulerRates \
-  $(per_model fmi3_abuse_) abuse_attitude
+configure_and_build tsan $(per_model test_fmi2_instances_) $(per_model fmi3_abuse_) abuse_attitude
 run tsan build-tsan/abuse_attitude 8 50 "$steps" 1000
-for suffix in "" _EulerRates; do
-  run tsan "build-tsan/test_fmi2_instances$suffix" 1000 4 "$steps"
-  run tsan "build-tsan/test_fmi2_instances$suffix" 64 8 "$steps"
-done
 for model in $models; do
+  run tsan "build-tsan/test_fmi2_instances_$model" 1000 4 "$steps"
+  run tsan "build-tsan/test_fmi2_instances_$model" 64 8 "$steps"
   run tsan "build-tsan/fmi3_abuse_$model" instances 1000 4 "$steps"
 done
 
@@ -123,13 +115,10 @@ memcheck() { # program, arguments...: valgrind's summary printed, any error or l
 }
 memcheck build/test_kinematics
 memcheck build/abuse_attitude 4 20 "$valgrind_steps" "$valgrind_soak"
-memcheck build/test_fmi2_calls_AttitudePropagator
-for suffix in "" _EulerRates; do
-  memcheck "build/test_fmi2_calls$suffix"
-  memcheck "build/test_fmi2_instances$suffix" 1000 4 "$valgrind_steps"
-  memcheck "build/soak_fmi2$suffix" "$valgrind_soak" --no-rss-check
-done
 for model in $models; do
+  memcheck "build/test_fmi2_calls_$model"
+  memcheck "build/test_fmi2_instances_$model" 1000 4 "$valgrind_steps"
+  memcheck "build/soak_fmi2_$model" "$valgrind_soak" --no-rss-check
   memcheck "build/fmi3_abuse_$model" calls
   memcheck "build/fmi3_abuse_$model" instances 100 4 "$valgrind_steps"
   memcheck "build/fmi3_abuse_$model" soak "$valgrind_soak"

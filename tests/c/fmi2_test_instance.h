@@ -83,6 +83,15 @@ bool ak_test_outputs_consistent(fmi2Component c);
 /* The value references of the main output group, in value-reference order; how many. */
 size_t ak_test_main_outputs(fmi2ValueReference out[AK_MAX_VARIABLES]);
 
+/* True when value references 0 to 20 are the inputs and outputs of the hand-written 1-2-3 kernel
+ * (theta, theta_dot, theta_ddot; omega_fixed, omega_body, alpha_fixed, alpha_body): a model with
+ * that layout and the sequence body123 is compared with ak_angular_kinematics_123 too. */
+bool ak_test_has_kinematics_123_layout(void);
+/* True when theta[2] is the input of value reference 1 and the model reports its distance to a
+ * singularity (singularity_distance): it warns near the singular theta[2] and discards a step at
+ * it (AK_TEST_SINGULAR_THETA2). */
+bool ak_test_has_singular_theta2(void);
+
 /* The value reference of the variable of that name (the test fails hard if there is none). */
 fmi2ValueReference ak_test_vr(const char *name);
 /* The same for a variable the model may not have: false when it has none. */

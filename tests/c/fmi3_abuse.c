@@ -19,17 +19,7 @@
 
 #include "fmi3Functions.h"
 #include "model.h"
-
-static int failures = 0;
-#define CHECK(condition, ...)                                                                     \
-    do {                                                                                          \
-        if (!(condition)) {                                                                       \
-            fprintf(stderr, "FAILED %s:%d: ", __FILE__, __LINE__);                               \
-            fprintf(stderr, __VA_ARGS__);                                                         \
-            fprintf(stderr, "\n");                                                                \
-            __atomic_add_fetch(&failures, 1, __ATOMIC_RELAXED);                                   \
-        }                                                                                         \
-    } while (0)
+#include "test_check.h"
 
 typedef struct {
     int errors;
@@ -101,7 +91,7 @@ static int64_t sequence_of(unsigned int instance) {
 static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_states) {
     log_counts counts = {0, 0};
     fmi3Instance instance = new_instance(&counts);
-    CHECK(instance != NULL, "instantiate %u", id);
+    ak_check(instance != NULL, "instantiate %u", id);
     if (instance == NULL) {
         return 0;
     }
@@ -114,9 +104,10 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
             vr_sequence = (fmi3ValueReference)vr;
         }
     }
-    CHECK(fmi3SetInt64(instance, &vr_sequence, 1, &sequence, 1) == fmi3OK, "set sequence");
-    CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK, "enter");
-    CHECK(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
+    ak_check(fmi3SetInt64(instance, &vr_sequence, 1, &sequence, 1) == fmi3OK, "set sequence");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK,
+             "enter");
+    ak_check(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
     fmi3ValueReference inputs[AK_MAX_INPUTS];
     const size_t n_in = input_arrays(inputs);
     fmi3ValueReference arrays[AK_MAX_VARIABLES];
@@ -132,15 +123,15 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
             u[1] = 0.5 * u[1]; /* EulerRates: keep theta[2] in (-1, 1), away from singularities;
                                 * AttitudePropagator: a smaller omega[2] */
         }
-        CHECK(fmi3SetFloat64(instance, inputs, n_in, u, (size_t)AK_MODEL.n_inputs) == fmi3OK,
-              "set %u", step);
+        ak_check(fmi3SetFloat64(instance, inputs, n_in, u, (size_t)AK_MODEL.n_inputs) == fmi3OK,
+                 "set %u", step);
         fmi3Boolean event, terminate, early;
         double last;
         const fmi3Status s = fmi3DoStep(instance, t, 0.001, fmi3True, &event, &terminate, &early, &last);
-        CHECK(s == fmi3OK || s == fmi3Warning, "step %u: %d", step, (int)s);
+        ak_check(s == fmi3OK || s == fmi3Warning, "step %u: %d", step, (int)s);
         t = last;
         const fmi3Status g = fmi3GetFloat64(instance, arrays, n_arrays, y, n_outputs);
-        CHECK(g == fmi3OK || g == fmi3Warning, "get %u: %d", step, (int)g);
+        ak_check(g == fmi3OK || g == fmi3Warning, "get %u: %d", step, (int)g);
         for (size_t i = 0; i < n_outputs; i++) {
             uint64_t bits;
             memcpy(&bits, &y[i], sizeof bits);
@@ -148,23 +139,24 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
         }
         if (with_states && step % 7 == 3) {
             /* Get, serialize, deserialize, set: the instance continues from the same point. */
-            CHECK(fmi3GetFMUState(instance, &state) == fmi3OK, "get state");
+            ak_check(fmi3GetFMUState(instance, &state) == fmi3OK, "get state");
             size_t size = 0;
-            CHECK(fmi3SerializedFMUStateSize(instance, state, &size) == fmi3OK, "size");
+            ak_check(fmi3SerializedFMUStateSize(instance, state, &size) == fmi3OK, "size");
             unsigned char *bytes = malloc(size);
-            CHECK(bytes != NULL && fmi3SerializeFMUState(instance, state, bytes, size) == fmi3OK,
-                  "serialize");
+            ak_check(bytes != NULL && fmi3SerializeFMUState(instance, state, bytes, size) == fmi3OK,
+                     "serialize");
             fmi3FMUState copy = NULL;
-            CHECK(fmi3DeserializeFMUState(instance, bytes, size, &copy) == fmi3OK, "deserialize");
-            CHECK(fmi3SetFMUState(instance, copy) == fmi3OK, "set state");
-            CHECK(fmi3FreeFMUState(instance, &copy) == fmi3OK && copy == NULL, "free state");
+            ak_check(fmi3DeserializeFMUState(instance, bytes, size, &copy) == fmi3OK,
+                     "deserialize");
+            ak_check(fmi3SetFMUState(instance, copy) == fmi3OK, "set state");
+            ak_check(fmi3FreeFMUState(instance, &copy) == fmi3OK && copy == NULL, "free state");
             free(bytes);
         }
     }
     /* The last state is left for fmi3FreeInstance to free. */
-    CHECK(fmi3Terminate(instance) == fmi3OK, "terminate");
+    ak_check(fmi3Terminate(instance) == fmi3OK, "terminate");
     fmi3FreeInstance(instance);
-    CHECK(counts.errors == 0, "instance %u logged %d errors", id, counts.errors);
+    ak_check(counts.errors == 0, "instance %u logged %d errors", id, counts.errors);
     return digest;
 }
 
@@ -186,18 +178,19 @@ static void instances(unsigned int n, unsigned int threads, unsigned int steps) 
     pthread_t *ids = calloc(threads, sizeof *ids);
     work *works = calloc(threads, sizeof *works);
     if (digests == NULL || ids == NULL || works == NULL) {
-        CHECK(0, "out of memory");
+        ak_check(0, "out of memory");
     } else {
         for (unsigned int k = 0; k < threads; k++) {
             works[k] = (work){k * n / threads, (k + 1) * n / threads - k * n / threads, steps,
                               digests};
-            CHECK(pthread_create(&ids[k], NULL, run_work, &works[k]) == 0, "thread");
+            ak_check(pthread_create(&ids[k], NULL, run_work, &works[k]) == 0, "thread");
         }
         for (unsigned int k = 0; k < threads; k++) {
             pthread_join(ids[k], NULL);
         }
         for (unsigned int i = 0; i < n; i++) {
-            CHECK(digests[i] == run_instance(i, steps, false), "instance %u differs from its lone rerun", i);
+            ak_check(digests[i] == run_instance(i, steps, false),
+                     "instance %u differs from its lone rerun", i);
         }
         printf("fmi3_abuse instances: %u instances x %u steps on %u threads, each bit-identical to a lone rerun\n",
                n, steps, threads);
@@ -214,19 +207,19 @@ static void null_instance(void) {
     size_t n = 0;
     fmi3Boolean b = fmi3False;
     fmi3FMUState s = NULL;
-    CHECK(fmi3SetFloat64(NULL, vr, 1, d, 3) == fmi3Error, "set");
-    CHECK(fmi3GetFloat64(NULL, vr, 1, d, 3) == fmi3Error, "get");
-    CHECK(fmi3DoStep(NULL, 0, 1, fmi3True, &b, &b, &b, d) == fmi3Error, "step");
-    CHECK(fmi3GetFMUState(NULL, &s) == fmi3Error, "state");
-    CHECK(fmi3GetNumberOfContinuousStates(NULL, &n) == fmi3Error, "states");
-    CHECK(fmi3EnterConfigurationMode(NULL) == fmi3Error, "configuration");
-    CHECK(fmi3GetClock(NULL, vr, 1, &b) == fmi3Error, "clock");
-    CHECK(fmi3Reset(NULL) == fmi3Error, "reset");
-    CHECK(fmi3Terminate(NULL) == fmi3Error, "terminate");
+    ak_check(fmi3SetFloat64(NULL, vr, 1, d, 3) == fmi3Error, "set");
+    ak_check(fmi3GetFloat64(NULL, vr, 1, d, 3) == fmi3Error, "get");
+    ak_check(fmi3DoStep(NULL, 0, 1, fmi3True, &b, &b, &b, d) == fmi3Error, "step");
+    ak_check(fmi3GetFMUState(NULL, &s) == fmi3Error, "state");
+    ak_check(fmi3GetNumberOfContinuousStates(NULL, &n) == fmi3Error, "states");
+    ak_check(fmi3EnterConfigurationMode(NULL) == fmi3Error, "configuration");
+    ak_check(fmi3GetClock(NULL, vr, 1, &b) == fmi3Error, "clock");
+    ak_check(fmi3Reset(NULL) == fmi3Error, "reset");
+    ak_check(fmi3Terminate(NULL) == fmi3Error, "terminate");
     fmi3FreeInstance(NULL);
-    CHECK(fmi3InstantiateCoSimulation(NULL, AK_MODEL.guid, NULL, 0, 0, 0, 0, NULL, 0, NULL, NULL,
+    ak_check(fmi3InstantiateCoSimulation(NULL, AK_MODEL.guid, NULL, 0, 0, 0, 0, NULL, 0, NULL, NULL,
                                       NULL) == NULL, "no name");
-    CHECK(fmi3InstantiateModelExchange("x", NULL, NULL, 0, 0, NULL, NULL) == NULL, "no token");
+    ak_check(fmi3InstantiateModelExchange("x", NULL, NULL, 0, 0, NULL, NULL) == NULL, "no token");
 }
 
 /* A live instance and NULL pointers or absurd counts: fmi3Error and one logged error each. */
@@ -236,27 +229,32 @@ static void null_pointers(void) {
     fmi3ValueReference vr[2] = {0, 3};
     double d[9] = {0};
     size_t n;
-    CHECK(fmi3SetFloat64(instance, NULL, 2, d, 6) == fmi3Error, "vr NULL");
-    CHECK(fmi3SetFloat64(instance, vr, 2, NULL, 6) == fmi3Error, "values NULL");
-    CHECK(fmi3SetFloat64(instance, vr, 2, d, SIZE_MAX) == fmi3Error, "SIZE_MAX");
-    CHECK(fmi3GetFloat64(instance, vr, 2, d, 0) == fmi3Error, "nValues 0");
-    CHECK(fmi3GetFMUState(instance, NULL) == fmi3Error, "state NULL");
-    CHECK(fmi3SerializedFMUStateSize(instance, NULL, &n) == fmi3Error, "size of NULL");
-    CHECK(fmi3DeserializeFMUState(instance, (const fmi3Byte *)"x", 1, NULL) == fmi3Error, "NULL out");
-    CHECK(fmi3SetDebugLogging(instance, fmi3True, 3, NULL) == fmi3Error, "categories NULL");
-    CHECK(fmi3GetNumberOfVariableDependencies(instance, 0, NULL) == fmi3Error, "of an input");
-    CHECK(fmi3EnterInitializationMode(instance, fmi3True, -1.0, 0, fmi3False, 0) == fmi3Error, "tol");
-    CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3True, -1.0) == fmi3Error, "stop");
-    CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, NAN, fmi3False, 0) == fmi3Error, "nan");
-    CHECK(counts.errors == 12, "%d errors logged, expected 12", counts.errors);
+    ak_check(fmi3SetFloat64(instance, NULL, 2, d, 6) == fmi3Error, "vr NULL");
+    ak_check(fmi3SetFloat64(instance, vr, 2, NULL, 6) == fmi3Error, "values NULL");
+    ak_check(fmi3SetFloat64(instance, vr, 2, d, SIZE_MAX) == fmi3Error, "SIZE_MAX");
+    ak_check(fmi3GetFloat64(instance, vr, 2, d, 0) == fmi3Error, "nValues 0");
+    ak_check(fmi3GetFMUState(instance, NULL) == fmi3Error, "state NULL");
+    ak_check(fmi3SerializedFMUStateSize(instance, NULL, &n) == fmi3Error, "size of NULL");
+    ak_check(fmi3DeserializeFMUState(instance, (const fmi3Byte *)"x", 1, NULL) == fmi3Error,
+             "NULL out");
+    ak_check(fmi3SetDebugLogging(instance, fmi3True, 3, NULL) == fmi3Error, "categories NULL");
+    ak_check(fmi3GetNumberOfVariableDependencies(instance, 0, NULL) == fmi3Error, "of an input");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3True, -1.0, 0, fmi3False, 0) == fmi3Error,
+             "tol");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3True, -1.0) == fmi3Error,
+             "stop");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, NAN, fmi3False, 0) == fmi3Error,
+             "nan");
+    ak_check(counts.errors == 12, "%d errors logged, expected 12", counts.errors);
     fmi3FreeInstance(instance);
 }
 
 static void soak(unsigned long steps) {
     log_counts counts = {0, 0};
     fmi3Instance instance = new_instance(&counts);
-    CHECK(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK, "enter");
-    CHECK(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
+    ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK,
+             "enter");
+    ak_check(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
     fmi3ValueReference inputs[AK_MAX_INPUTS];
     const size_t n_in = input_arrays(inputs);
     fmi3ValueReference outputs[AK_MAX_VARIABLES];
@@ -272,18 +270,18 @@ static void soak(unsigned long steps) {
         if (fmi3SetFloat64(instance, inputs, n_in, u, (size_t)AK_MODEL.n_inputs) != fmi3OK ||
             fmi3DoStep(instance, t, 0.001, fmi3True, &b, &b, &b, &last) > fmi3Warning ||
             fmi3GetFloat64(instance, outputs, n_outputs, y, n_values) > fmi3Warning) {
-            CHECK(0, "step %lu failed", step);
+            ak_check(0, "step %lu failed", step);
             break;
         }
         t = last;
         for (size_t k = 0; k < n_values; k++) {
             if (!isfinite(y[k])) {
-                CHECK(0, "step %lu: output %zu = %g", step, k, y[k]);
+                ak_check(0, "step %lu: output %zu = %g", step, k, y[k]);
                 break;
             }
         }
     }
-    CHECK(counts.errors == 0, "%d errors logged", counts.errors);
+    ak_check(counts.errors == 0, "%d errors logged", counts.errors);
     fmi3FreeInstance(instance);
     printf("fmi3_abuse soak (%s): %lu steps, 0 errors\n", AK_MODEL.model_identifier, steps);
 }
@@ -304,5 +302,5 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: fmi3_abuse calls | instances N THREADS STEPS | soak STEPS\n");
         return 2;
     }
-    return failures == 0 ? 0 : 1;
+    return ak_check_exit_status();
 }

@@ -12,15 +12,7 @@
 
 #include "attitude.h"
 #include "kinematics_general.h"
-
-static int failures = 0;
-
-static void check(bool ok, const char *what, double got, double bound) {
-    if (!ok) {
-        failures++;
-        printf("FAIL %s: %.3e (bound %.3e)\n", what, got, bound);
-    }
-}
+#include "test_check.h"
 
 /* Deterministic pseudo-random numbers in [-1, 1) (no global state: the caller keeps the seed). */
 static double uniform(uint64_t *seed) {
@@ -68,7 +60,7 @@ static void test_product_composes(void) {
         }
         worst = fmax(worst, matrix_difference(Rab, product));
     }
-    check(worst < 4e-15, "R(a b) = R(a) R(b)", worst, 4e-15);
+    ak_check(worst < 4e-15, "%s: %.3e (bound %.3e)", "R(a b) = R(a) R(b)", worst, 4e-15);
 }
 
 /* R(q) agrees with the angle-based R and quaternion of kinematics_general for every sequence. */
@@ -85,7 +77,7 @@ static void test_matrix_matches_kinematics_general(void) {
             worst = fmax(worst, matrix_difference(R, Rq));
         }
     }
-    check(worst < 1e-15, "R(q) = R(theta)", worst, 1e-15);
+    ak_check(worst < 1e-15, "%s: %.3e (bound %.3e)", "R(q) = R(theta)", worst, 1e-15);
 }
 
 /* exp is unit and continuous across its series threshold (|v| = 1e-4). */
@@ -97,14 +89,15 @@ static void test_exp(void) {
         ak_quat_exp(v, e);
         worst_norm = fmax(worst_norm, fabs(sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]) - 1.0));
     }
-    check(worst_norm < 3e-16, "|exp(v)| - 1", worst_norm, 3e-16);
+    ak_check(worst_norm < 3e-16, "%s: %.3e (bound %.3e)", "|exp(v)| - 1", worst_norm, 3e-16);
     const double below[3] = {0.99999999e-4, 0.0, 0.0}, above[3] = {1.00000001e-4, 0.0, 0.0};
     double eb[4], ea[4];
     ak_quat_exp(below, eb);
     ak_quat_exp(above, ea);
     const double expected = cos(1e-4) * (above[0] - below[0]); /* d sin(a) = cos(a) da */
-    check(fabs((ea[1] - eb[1]) - expected) < 1e-19, "exp continuous at 1e-4",
-          fabs((ea[1] - eb[1]) - expected), 1e-19);
+    ak_check(fabs((ea[1] - eb[1]) - expected) < 1e-19,
+             "%s: %.3e (bound %.3e)",
+             "exp continuous at 1e-4", fabs((ea[1] - eb[1]) - expected), 1e-19);
 }
 
 /* Constant omega: q(t) = q0 (x) exp(t omega / 2) (body) and exp(t omega / 2) (x) q0 (fixed). */
@@ -134,8 +127,8 @@ static void test_constant_rotation_is_exact(void) {
         }
         /* 1000 products, each rounding to ~1e-16: a bound of 1e-13 is rounding, not truncation
          * (the truncation error of any non-exact method at h = 1e-2 over 10 s is far larger). */
-        check(error < 1e-13, frame == AK_FRAME_BODY ? "constant rotation, body" : "constant rotation, fixed",
-              error, 1e-13);
+        ak_check(error < 1e-13,
+                 "%s: %.3e (bound %.3e)", frame == AK_FRAME_BODY ? "constant rotation, body" : "constant rotation, fixed", error, 1e-13);
     }
 }
 
@@ -165,10 +158,13 @@ static void test_input_polynomial(void) {
             worst_given = fmax(worst_given, fabs(c[m][k] - C[m][k]));
         }
     }
-    check(worst < 1e-13, "Hermite cubic from the history", worst, 1e-13);
-    check(worst_given < 1e-13, "cubic from w2 and the history slope", worst_given, 1e-13);
+    ak_check(worst < 1e-13,
+             "%s: %.3e (bound %.3e)", "Hermite cubic from the history", worst, 1e-13);
+    ak_check(worst_given < 1e-13,
+             "%s: %.3e (bound %.3e)", "cubic from w2 and the history slope", worst_given, 1e-13);
     ak_attitude_input_polynomial(w0, w1, w2, NULL, NULL, 0.0, c);
-    check(c[2][1] == C[2][1] && c[3][1] == 0.0, "Taylor without history", c[3][1], 0.0);
+    ak_check(c[2][1] == C[2][1] && c[3][1] == 0.0,
+             "%s: %.3e (bound %.3e)", "Taylor without history", c[3][1], 0.0);
 }
 
 /* Angles -> R -> angles returns the principal angles for all 24 sequences, and the angles of a
@@ -194,8 +190,9 @@ static void test_angles_round_trip(void) {
             ak_attitude_angles(sequence, R, previous, back, &distance);
             ak_general_rotation_matrix(sequence, back, Rb);
             worst_matrix = fmax(worst_matrix, matrix_difference(R, Rb));
-            check(fabs(back[0] - previous[0]) < 0.1, "unwrapped theta1 near previous",
-                  fabs(back[0] - previous[0]), 0.1);
+            ak_check(fabs(back[0] - previous[0]) < 0.1,
+                     "%s: %.3e (bound %.3e)",
+                     "unwrapped theta1 near previous", fabs(back[0] - previous[0]), 0.1);
         }
         /* The singular attitude: theta2 = pi/2 (Tait-Bryan) or 0 (proper Euler). */
         const double singular[3] = {0.7, sequence->proper_euler ? 0.0 : 1.5707963267948966, -0.4};
@@ -204,12 +201,17 @@ static void test_angles_round_trip(void) {
         ak_general_rotation_matrix(sequence, singular, R);
         const bool held = ak_attitude_angles(sequence, R, previous, back, &distance);
         ak_general_rotation_matrix(sequence, back, Rb);
-        check(held && back[0] == previous[0], "theta1 held at the singular angle", back[0], previous[0]);
-        check(matrix_difference(R, Rb) < 1e-15, "singular angles rebuild R", matrix_difference(R, Rb),
-              1e-15);
+        ak_check(held && back[0] == previous[0],
+                 "%s: %.3e (bound %.3e)",
+                 "theta1 held at the singular angle", back[0], previous[0]);
+        ak_check(matrix_difference(R, Rb) < 1e-15,
+                 "%s: %.3e (bound %.3e)",
+                 "singular angles rebuild R", matrix_difference(R, Rb), 1e-15);
     }
-    check(worst < 1e-14, "angles -> R -> angles (times distance)", worst, 1e-14);
-    check(worst_matrix < 2e-15, "continuous angles rebuild R", worst_matrix, 2e-15);
+    ak_check(worst < 1e-14,
+             "%s: %.3e (bound %.3e)", "angles -> R -> angles (times distance)", worst, 1e-14);
+    ak_check(worst_matrix < 2e-15,
+             "%s: %.3e (bound %.3e)", "continuous angles rebuild R", worst_matrix, 2e-15);
 }
 
 /* A smooth trajectory through gimbal lock: theta(t) recovered from R(theta(t)) sampled densely,
@@ -237,7 +239,8 @@ static void test_trajectory_through_singularity(void) {
             }
         }
     }
-    check(worst < 1.0, "trajectory through gimbal lock (error / bound)", worst, 1.0);
+    ak_check(worst < 1.0,
+             "%s: %.3e (bound %.3e)", "trajectory through gimbal lock (error / bound)", worst, 1.0);
 }
 
 /* A tumbling body: omega(t) = (sin t, 0.5 cos 2t, 0.3 + 0.2 sin 3t) rad/s, body frame, h = 1e-3,
@@ -288,12 +291,13 @@ int main(int argc, char **argv) {
     test_trajectory_through_singularity();
     double drift, correction, uncorrected;
     norm_run(100000, &drift, &correction, &uncorrected);
-    check(drift < 1e-15, "norm drift after 1e5 steps", drift, 1e-15);
+    ak_check(drift < 1e-15, "%s: %.3e (bound %.3e)", "norm drift after 1e5 steps", drift, 1e-15);
     /* The correction only ever removes rounding: a few units of 1e-16 at most. */
-    check(correction < 1e-15, "largest norm correction of one step", correction, 1e-15);
+    ak_check(correction < 1e-15,
+             "%s: %.3e (bound %.3e)", "largest norm correction of one step", correction, 1e-15);
     printf("norm after 1e5 steps: | |q| - 1 | = %.3e, largest correction %.3e\n", drift, correction);
-    if (failures) {
-        printf("%d failure(s)\n", failures);
+    if (ak_check_failures()) {
+        printf("%d failure(s)\n", ak_check_failures());
         return 1;
     }
     printf("attitude core: all tests passed\n");

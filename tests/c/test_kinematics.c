@@ -8,21 +8,11 @@
  */
 #include "kinematics_123.h"
 #include "rotation_matrices.h"
+#include "test_check.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-
-static int failures = 0;
-static int checks = 0;
-
-static void check_close(const char *what, double got, double expected, double tolerance) {
-    checks++;
-    if (!(fabs(got - expected) <= tolerance)) {
-        failures++;
-        printf("FAIL %s: got %.17g expected %.17g (tolerance %g)\n", what, got, expected, tolerance);
-    }
-}
 
 static void transpose_times(double R[3][3], const double v[3], double out[3]) {
     for (int k = 0; k < 3; k++) {
@@ -48,7 +38,7 @@ static void check_state(const double theta[3], const double td[3], const double 
     ak_rotation_matrix_123(theta, R_core);
     for (int r = 0; r < 3; r++) {
         for (int k = 0; k < 3; k++) {
-            check_close("R", R_core[r][k], R[r][k], 4e-16);
+            ak_check_close(R_core[r][k], R[r][k], 4e-16, "R");
         }
     }
 
@@ -72,18 +62,18 @@ static void check_state(const double theta[3], const double td[3], const double 
     }
 
     ak_angular_kinematics_123(theta, td, tdd, wf, wb, af, ab);
-    check_close("omega_fixed[1] vs skew", wf[0], S[2][1], 1e-14 * scale_w);
-    check_close("omega_fixed[2] vs skew", wf[1], S[0][2], 1e-14 * scale_w);
-    check_close("omega_fixed[3] vs skew", wf[2], S[1][0], 1e-14 * scale_w);
+    ak_check_close(wf[0], S[2][1], 1e-14 * scale_w, "omega_fixed[1] vs skew");
+    ak_check_close(wf[1], S[0][2], 1e-14 * scale_w, "omega_fixed[2] vs skew");
+    ak_check_close(wf[2], S[1][0], 1e-14 * scale_w, "omega_fixed[3] vs skew");
 
     double rotated[3];
     transpose_times(R, wf, rotated);
     for (int k = 0; k < 3; k++) {
-        check_close("omega_body = R^T omega_fixed", wb[k], rotated[k], 1e-14 * scale_w);
+        ak_check_close(wb[k], rotated[k], 1e-14 * scale_w, "omega_body = R^T omega_fixed");
     }
     transpose_times(R, af, rotated);
     for (int k = 0; k < 3; k++) {
-        check_close("alpha_body = R^T alpha_fixed", ab[k], rotated[k], 1e-14 * scale_a);
+        ak_check_close(ab[k], rotated[k], 1e-14 * scale_a, "alpha_body = R^T alpha_fixed");
     }
 
     /* alpha = d(omega)/dt along theta(t) = theta + td t + tdd t^2 / 2, a fourth-order difference. */
@@ -101,8 +91,8 @@ static void check_state(const double theta[3], const double td[3], const double 
     for (int k = 0; k < 3; k++) {
         const double dwf = (wf_steps[0][k] - 8 * wf_steps[1][k] + 8 * wf_steps[2][k] - wf_steps[3][k]) / (12 * h);
         const double dwb = (wb_steps[0][k] - 8 * wb_steps[1][k] + 8 * wb_steps[2][k] - wb_steps[3][k]) / (12 * h);
-        check_close("alpha_fixed = d(omega_fixed)/dt", af[k], dwf, 1e-7 * scale_a);
-        check_close("alpha_body = d(omega_body)/dt", ab[k], dwb, 1e-7 * scale_a);
+        ak_check_close(af[k], dwf, 1e-7 * scale_a, "alpha_fixed = d(omega_fixed)/dt");
+        ak_check_close(ab[k], dwb, 1e-7 * scale_a, "alpha_body = d(omega_body)/dt");
     }
 }
 
@@ -111,12 +101,12 @@ static void check_identity_orientation(void) {
     double wf[3], wb[3], af[3], ab[3];
     ak_angular_kinematics_123(zero, td, tdd, wf, wb, af, ab);
     for (int k = 0; k < 3; k++) {
-        check_close("omega_fixed at theta = 0", wf[k], td[k], 0.0);
-        check_close("omega_body at theta = 0", wb[k], td[k], 0.0);
+        ak_check_close(wf[k], td[k], 0.0, "omega_fixed at theta = 0");
+        ak_check_close(wb[k], td[k], 0.0, "omega_body at theta = 0");
     }
     /* At theta = 0 only the products of rates remain beside tdd: alpha1 = tdd1 + td2 td3. */
-    check_close("alpha_fixed[1] at theta = 0", af[0], tdd[0] + td[1] * td[2], 1e-15);
-    check_close("alpha_body[3] at theta = 0", ab[2], tdd[2] + td[0] * td[1], 1e-15);
+    ak_check_close(af[0], tdd[0] + td[1] * td[2], 1e-15, "alpha_fixed[1] at theta = 0");
+    ak_check_close(ab[2], tdd[2] + td[0] * td[1], 1e-15, "alpha_body[3] at theta = 0");
 }
 
 int main(void) {
@@ -136,6 +126,6 @@ int main(void) {
         }
         check_state(theta, td, tdd);
     }
-    printf("%d checks, %d failures\n", checks, failures);
-    return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    printf("%d checks, %d failures\n", ak_check_count(), ak_check_failures());
+    return ak_check_exit_status();
 }

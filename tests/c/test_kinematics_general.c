@@ -12,6 +12,7 @@
 #include "rotation_matrices.h"
 #include "kinematics_general.h"
 #include "sequences.h"
+#include "test_check.h"
 
 #include <float.h>
 #include <math.h>
@@ -30,27 +31,6 @@ static int ak_sequence_index(const char *name) {
         }
     }
     return -1;
-}
-
-static int failures = 0;
-static int checks = 0;
-
-static void check(const char *sequence, const char *what, int ok) {
-    checks++;
-    if (!ok) {
-        failures++;
-        printf("FAIL %s: %s\n", sequence, what);
-    }
-}
-
-static void check_close(const char *sequence, const char *what, double got, double expected,
-                        double tolerance) {
-    checks++;
-    if (!(fabs(got - expected) <= tolerance)) {
-        failures++;
-        printf("FAIL %s: %s: got %.17g expected %.17g (tolerance %g)\n", sequence, what, got,
-               expected, tolerance);
-    }
 }
 
 static double random_in(double low, double high) {
@@ -124,30 +104,32 @@ static void check_rotation(const ak_sequence *seq, const double theta[3], const 
     ak_general_rotation_matrix(seq, theta, R);
     for (int r = 0; r < 3; r++) {
         for (int k = 0; k < 3; k++) {
-            check_close(seq->name, "R = product of elementary rotations", R[r][k], R_ref[r][k], 1e-15);
+            ak_check_close(R[r][k], R_ref[r][k], 1e-15,
+                           "%s: R = product of elementary rotations", seq->name);
             const double RRt = R[r][0] * R[k][0] + R[r][1] * R[k][1] + R[r][2] * R[k][2];
-            check_close(seq->name, "R R^T = I", RRt, r == k ? 1.0 : 0.0, 1e-15);
+            ak_check_close(RRt, r == k ? 1.0 : 0.0, 1e-15, "%s: R R^T = I", seq->name);
         }
     }
-    check_close(seq->name, "det R = 1", det3(R), 1.0, 1e-15);
+    ak_check_close(det3(R), 1.0, 1e-15, "%s: det R = 1", seq->name);
 
     ak_general_quaternion(seq, theta, q);
-    check_close(seq->name, "|q| = 1", q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0, 1e-15);
-    check(seq->name, "q0 >= 0", q[0] >= 0.0);
+    ak_check_close(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0, 1e-15,
+                   "%s: |q| = 1", seq->name);
+    ak_check(q[0] >= 0.0, "%s: q0 >= 0", seq->name);
     const double Rq[3][3] = {
         {1 - 2 * (q[2] * q[2] + q[3] * q[3]), 2 * (q[1] * q[2] - q[0] * q[3]), 2 * (q[1] * q[3] + q[0] * q[2])},
         {2 * (q[1] * q[2] + q[0] * q[3]), 1 - 2 * (q[1] * q[1] + q[3] * q[3]), 2 * (q[2] * q[3] - q[0] * q[1])},
         {2 * (q[1] * q[3] - q[0] * q[2]), 2 * (q[2] * q[3] + q[0] * q[1]), 1 - 2 * (q[1] * q[1] + q[2] * q[2])}};
     for (int r = 0; r < 3; r++) {
         for (int k = 0; k < 3; k++) {
-            check_close(seq->name, "R(q) = R", Rq[r][k], R_ref[r][k], 2e-15);
+            ak_check_close(Rq[r][k], R_ref[r][k], 2e-15, "%s: R(q) = R", seq->name);
         }
     }
     /* theta + 2 pi on one angle is the same orientation, hence the same q. */
     double shifted[3] = {theta[0], theta[1], theta[2] + 6.283185307179586}, q2[4];
     ak_general_quaternion(seq, shifted, q2);
     for (int k = 0; k < 4; k++) {
-        check_close(seq->name, "q(theta3 + 2 pi) = q(theta)", q2[k], q[k], 1e-14);
+        ak_check_close(q2[k], q[k], 1e-14, "%s: q(theta3 + 2 pi) = q(theta)", seq->name);
     }
 }
 
@@ -164,44 +146,52 @@ static void check_velocity(const ak_sequence *seq, const double theta[3], const 
         }
     }
     ak_general_angular_kinematics(seq, theta, td, tdd, wf, wb, af, ab);
-    check_close(seq->name, "omega_fixed[1] vs skew(dR/dt R^T)", wf[0], S[2][1], 1e-14 * scale_w);
-    check_close(seq->name, "omega_fixed[2] vs skew(dR/dt R^T)", wf[1], S[0][2], 1e-14 * scale_w);
-    check_close(seq->name, "omega_fixed[3] vs skew(dR/dt R^T)", wf[2], S[1][0], 1e-14 * scale_w);
+    ak_check_close(wf[0], S[2][1], 1e-14 * scale_w,
+                   "%s: omega_fixed[1] vs skew(dR/dt R^T)", seq->name);
+    ak_check_close(wf[1], S[0][2], 1e-14 * scale_w,
+                   "%s: omega_fixed[2] vs skew(dR/dt R^T)", seq->name);
+    ak_check_close(wf[2], S[1][0], 1e-14 * scale_w,
+                   "%s: omega_fixed[3] vs skew(dR/dt R^T)", seq->name);
     transpose_times(R, wf, rotated);
     for (int k = 0; k < 3; k++) {
-        check_close(seq->name, "omega_body = R^T omega_fixed", wb[k], rotated[k], 1e-14 * scale_w);
+        ak_check_close(wb[k], rotated[k], 1e-14 * scale_w,
+                       "%s: omega_body = R^T omega_fixed", seq->name);
     }
     transpose_times(R, af, rotated);
     for (int k = 0; k < 3; k++) {
-        check_close(seq->name, "alpha_body = R^T alpha_fixed", ab[k], rotated[k], 1e-14 * scale_a);
+        ak_check_close(ab[k], rotated[k], 1e-14 * scale_a,
+                       "%s: alpha_body = R^T alpha_fixed", seq->name);
     }
 
     ak_general_partials(seq, theta, td, Wf, Wb, Wfd, Wbd);
     times(Wf, td, x);
     for (int k = 0; k < 3; k++) {
-        check_close(seq->name, "omega_fixed = W_fixed theta_dot", x[k], wf[k], 1e-14 * scale_w);
+        ak_check_close(x[k], wf[k], 1e-14 * scale_w,
+                       "%s: omega_fixed = W_fixed theta_dot", seq->name);
     }
     times(Wb, td, x);
     for (int k = 0; k < 3; k++) {
-        check_close(seq->name, "omega_body = W_body theta_dot", x[k], wb[k], 1e-14 * scale_w);
+        ak_check_close(x[k], wb[k], 1e-14 * scale_w,
+                       "%s: omega_body = W_body theta_dot", seq->name);
     }
     for (int r = 0; r < 3; r++) {
         for (int k = 0; k < 3; k++) {
             const double rotated_column = R[0][r] * Wf[0][k] + R[1][r] * Wf[1][k] + R[2][r] * Wf[2][k];
-            check_close(seq->name, "W_body = R^T W_fixed", Wb[r][k], rotated_column, 1e-15);
+            ak_check_close(Wb[r][k], rotated_column, 1e-15, "%s: W_body = R^T W_fixed", seq->name);
         }
     }
     const double d = singularity_distance(seq, theta);
     const double expected_d = seq->proper_euler ? fabs(sin(theta[1])) : fabs(cos(theta[1]));
-    check_close(seq->name, "distance = |cos theta2| or |sin theta2|", d, expected_d, 0.0);
-    check_close(seq->name, "|det W_fixed| = distance", fabs(det3(Wf)), d, 1e-15);
+    ak_check_close(d, expected_d, 0.0, "%s: distance = |cos theta2| or |sin theta2|", seq->name);
+    ak_check_close(fabs(det3(Wf)), d, 1e-15, "%s: |det W_fixed| = distance", seq->name);
     /* The signs stated in kinematics_general.h, section 4. */
     const int cyclic = (seq->axes[1] - seq->axes[0] + 3) % 3 == 1;
     const double signed_det = seq->proper_euler
                                   ? (seq->kind == AK_SPACE_FIXED ? 1.0 : -1.0) * sin(theta[1])
                                   : (cyclic ? 1.0 : -1.0) * cos(theta[1]);
-    check_close(seq->name, "det W_fixed = eps cos theta2 or -+sin theta2", det3(Wf), signed_det, 1e-15);
-    check_close(seq->name, "|det W_body| = distance", fabs(det3(Wb)), d, 1e-15);
+    ak_check_close(det3(Wf), signed_det, 1e-15,
+                   "%s: det W_fixed = eps cos theta2 or -+sin theta2", seq->name);
+    ak_check_close(fabs(det3(Wb)), d, 1e-15, "%s: |det W_body| = distance", seq->name);
 
     /* Along theta(t) = theta + td t + tdd t^2 / 2: alpha = d(omega)/dt and W_dot = dW/dt,
      * a fourth-order central difference. */
@@ -226,11 +216,15 @@ static void check_velocity(const ak_sequence *seq, const double theta[3], const 
         }
     }
     for (int r = 0; r < 3; r++) {
-        check_close(seq->name, "alpha_fixed = d(omega_fixed)/dt", af[r], dwf[r], 1e-7 * scale_a);
-        check_close(seq->name, "alpha_body = d(omega_body)/dt", ab[r], dwb[r], 1e-7 * scale_a);
+        ak_check_close(af[r], dwf[r], 1e-7 * scale_a,
+                       "%s: alpha_fixed = d(omega_fixed)/dt", seq->name);
+        ak_check_close(ab[r], dwb[r], 1e-7 * scale_a,
+                       "%s: alpha_body = d(omega_body)/dt", seq->name);
         for (int k = 0; k < 3; k++) {
-            check_close(seq->name, "W_fixed_dot = d(W_fixed)/dt", Wfd[r][k], dWf[r][k], 1e-7 * scale_w);
-            check_close(seq->name, "W_body_dot = d(W_body)/dt", Wbd[r][k], dWb[r][k], 1e-7 * scale_w);
+            ak_check_close(Wfd[r][k], dWf[r][k], 1e-7 * scale_w,
+                           "%s: W_fixed_dot = d(W_fixed)/dt", seq->name);
+            ak_check_close(Wbd[r][k], dWb[r][k], 1e-7 * scale_w,
+                           "%s: W_body_dot = d(W_body)/dt", seq->name);
         }
     }
 }
@@ -248,17 +242,20 @@ static void check_round_trip(const ak_sequence *seq, const double theta[3], cons
         const ak_rates_status status = ak_general_euler_rates(
             seq, f == 0 ? AK_FRAME_FIXED : AK_FRAME_BODY, theta, f == 0 ? wf : wb, f == 0 ? af : ab,
             1e-300, td_back, tdd_back, af_back, ab_back, &distance);
-        check(seq->name, "round trip: status OK", status == AK_RATES_OK);
-        check_close(seq->name, "round trip: distance", distance, d, 0.0);
+        ak_check(status == AK_RATES_OK, "%s: round trip: status OK", seq->name);
+        ak_check_close(distance, d, 0.0, "%s: round trip: distance", seq->name);
         if (status != AK_RATES_OK) {
             continue;
         }
         for (int k = 0; k < 3; k++) {
-            check_close(seq->name, "round trip: theta_dot", td_back[k], td[k], 1e-14 * scale_w / d);
-            check_close(seq->name, "round trip: theta_ddot", tdd_back[k], tdd[k],
-                        1e-14 * scale_a / (d * d));
-            check_close(seq->name, "round trip: alpha_fixed", af_back[k], af[k], 1e-14 * scale_a);
-            check_close(seq->name, "round trip: alpha_body", ab_back[k], ab[k], 1e-14 * scale_a);
+            ak_check_close(td_back[k], td[k], 1e-14 * scale_w / d,
+                           "%s: round trip: theta_dot", seq->name);
+            ak_check_close(tdd_back[k], tdd[k], 1e-14 * scale_a / (d * d),
+                           "%s: round trip: theta_ddot", seq->name);
+            ak_check_close(af_back[k], af[k], 1e-14 * scale_a,
+                           "%s: round trip: alpha_fixed", seq->name);
+            ak_check_close(ab_back[k], ab[k], 1e-14 * scale_a,
+                           "%s: round trip: alpha_body", seq->name);
         }
     }
 }
@@ -274,11 +271,12 @@ static void check_singularity(const ak_sequence *seq) {
             for (int f = 0; f < 2; f++) {
                 const ak_rates_status status = ak_general_euler_rates(
                     seq, f ? AK_FRAME_BODY : AK_FRAME_FIXED, theta, omega, omega_dot, 1e-6, td, tdd, af, ab, &d);
-                check(seq->name, "at the singular angle: AK_RATES_SINGULAR", status == AK_RATES_SINGULAR);
-                check(seq->name, "at the singular angle: distance below 1e-14", d < 1e-14);
-                check(seq->name, "at the singular angle: outputs untouched",
-                      td[0] == 7 && td[1] == 7 && td[2] == 7 && tdd[0] == 7 && tdd[2] == 7 &&
-                          af[1] == 7 && ab[1] == 7);
+                ak_check(status == AK_RATES_SINGULAR,
+                         "%s: at the singular angle: AK_RATES_SINGULAR", seq->name);
+                ak_check(d < 1e-14, "%s: at the singular angle: distance below 1e-14", seq->name);
+                ak_check(td[0] == 7 && td[1] == 7 && td[2] == 7 && tdd[0] == 7 && tdd[2] == 7 &&
+                         af[1] == 7 && ab[1] == 7,
+                         "%s: at the singular angle: outputs untouched", seq->name);
             }
         }
         /* Inside the tolerance: computed, flagged. */
@@ -286,18 +284,20 @@ static void check_singularity(const ak_sequence *seq) {
         double td[3], tdd[3], af[3], ab[3], d;
         ak_rates_status status = ak_general_euler_rates(seq, AK_FRAME_FIXED, theta, omega, omega_dot,
                                                         1e-6, td, tdd, af, ab, &d);
-        check(seq->name, "1e-8 from singular: AK_RATES_NEAR_SINGULAR", status == AK_RATES_NEAR_SINGULAR);
-        check_close(seq->name, "1e-8 from singular: distance", d, 1e-8, 1e-15);
+        ak_check(status == AK_RATES_NEAR_SINGULAR,
+                 "%s: 1e-8 from singular: AK_RATES_NEAR_SINGULAR", seq->name);
+        ak_check_close(d, 1e-8, 1e-15, "%s: 1e-8 from singular: distance", seq->name);
         status = ak_general_euler_rates(seq, AK_FRAME_FIXED, theta, omega, omega_dot, 1e-9, td, tdd,
                                         af, ab, &d);
-        check(seq->name, "1e-8 from singular, tolerance 1e-9: AK_RATES_OK", status == AK_RATES_OK);
+        ak_check(status == AK_RATES_OK,
+                 "%s: 1e-8 from singular, tolerance 1e-9: AK_RATES_OK", seq->name);
         /* Far from the singularity but the result overflows: refused, nothing written. */
         const double far[3] = {0.4, singular[n] + 1e-3, -1.1}, huge[3] = {1e300, -1e300, 1e300};
         td[0] = 7;
         status = ak_general_euler_rates(seq, AK_FRAME_BODY, far, huge, omega_dot, 1e-6, td, tdd,
                                         af, ab, &d);
-        check(seq->name, "overflow: AK_RATES_OVERFLOW", status == AK_RATES_OVERFLOW);
-        check(seq->name, "overflow: outputs untouched", td[0] == 7);
+        ak_check(status == AK_RATES_OVERFLOW, "%s: overflow: AK_RATES_OVERFLOW", seq->name);
+        ak_check(td[0] == 7, "%s: overflow: outputs untouched", seq->name);
     }
 }
 
@@ -307,16 +307,21 @@ static void check_table(void) {
         char name[16];
         snprintf(name, sizeof name, "%s%d%d%d", seq->kind == AK_BODY_FIXED ? "body" : "space",
                  seq->axes[0], seq->axes[1], seq->axes[2]);
-        check(seq->name, "name says kind and axes", strcmp(name, seq->name) == 0);
-        check(seq->name, "index of name", ak_sequence_index(seq->name) == i);
-        check(seq->name, "consecutive axes differ",
-              seq->axes[0] != seq->axes[1] && seq->axes[1] != seq->axes[2]);
-        check(seq->name, "proper_euler flag", seq->proper_euler == (seq->axes[0] == seq->axes[2]));
-        check(seq->name, "body-fixed first, then space-fixed", (i < 12) == (seq->kind == AK_BODY_FIXED));
-        check(seq->name, "Tait-Bryan first in each half", (i % 12 < 6) == !seq->proper_euler);
+        ak_check(strcmp(name, seq->name) == 0, "%s: name says kind and axes", seq->name);
+        ak_check(ak_sequence_index(seq->name) == i, "%s: index of name", seq->name);
+        ak_check(seq->axes[0] != seq->axes[1] && seq->axes[1] != seq->axes[2],
+                 "%s: consecutive axes differ", seq->name);
+        ak_check(seq->proper_euler == (seq->axes[0] == seq->axes[2]),
+                 "%s: proper_euler flag", seq->name);
+        ak_check((i < 12) == (seq->kind == AK_BODY_FIXED),
+                 "%s: body-fixed first, then space-fixed", seq->name);
+        ak_check((i % 12 < 6) == !seq->proper_euler,
+                 "%s: Tait-Bryan first in each half", seq->name);
     }
-    check("table", "default is body123", strcmp(AK_SEQUENCES[AK_SEQUENCE_DEFAULT].name, "body123") == 0);
-    check("table", "unknown name", ak_sequence_index("body111") == -1 && ak_sequence_index(NULL) == -1);
+    ak_check(strcmp(AK_SEQUENCES[AK_SEQUENCE_DEFAULT].name, "body123") == 0,
+             "%s: default is body123", "table");
+    ak_check(ak_sequence_index("body111") == -1 && ak_sequence_index(NULL) == -1,
+             "%s: unknown name", "table");
 }
 
 /* The general core for body123 against the hand-written 1-2-3 core; worst scaled difference. */
@@ -332,8 +337,8 @@ static void check_body123_matches_core(const double theta[3], const double td[3]
     for (int n = 0; n < 4; n++) {
         for (int k = 0; k < 3; k++) {
             const double scale = n < 2 ? scale_w : scale_a;
-            check_close("body123", "general core = ak_angular_kinematics_123", g[n][k], h[n][k],
-                        1.5e-15 * scale);
+            ak_check_close(g[n][k], h[n][k], 1.5e-15 * scale,
+                           "%s: general core = ak_angular_kinematics_123", "body123");
             if (fabs(g[n][k] - h[n][k]) / scale > worst_body123_difference) {
                 worst_body123_difference = fabs(g[n][k] - h[n][k]) / scale;
             }
@@ -343,7 +348,8 @@ static void check_body123_matches_core(const double theta[3], const double td[3]
     ak_rotation_matrix_123(theta, Rh);
     for (int r = 0; r < 3; r++) {
         for (int k = 0; k < 3; k++) {
-            check_close("body123", "general R = ak_rotation_matrix_123", Rg[r][k], Rh[r][k], 1e-15);
+            ak_check_close(Rg[r][k], Rh[r][k], 1e-15,
+                           "%s: general R = ak_rotation_matrix_123", "body123");
         }
     }
 }
@@ -364,10 +370,10 @@ static void check_shared_sines(const ak_sequence *seq, const double theta[3], co
     ak_general_angular_kinematics(seq, theta, td, tdd, own, own + 3, own + 6, own + 9);
     ak_general_angular_kinematics(&copy, theta, td, tdd, generic, generic + 3, generic + 6,
                                   generic + 9);
-    check(seq->name, "omega, alpha from shared sines bit-identical",
-          memcmp(shared, own, sizeof own) == 0);
-    check(seq->name, "omega, alpha of the table entry and of a copy bit-identical",
-          memcmp(shared, generic, sizeof generic) == 0);
+    ak_check(memcmp(shared, own, sizeof own) == 0,
+             "%s: omega, alpha from shared sines bit-identical", seq->name);
+    ak_check(memcmp(shared, generic, sizeof generic) == 0,
+             "%s: omega, alpha of the table entry and of a copy bit-identical", seq->name);
 
     ak_rotation_outputs all, all_generic, one;
     ak_general_rotation_outputs(seq, &sines, &half, td, &all);
@@ -375,10 +381,10 @@ static void check_shared_sines(const ak_sequence *seq, const double theta[3], co
     ak_general_rotation_matrix(seq, theta, one.R);
     ak_general_quaternion(seq, theta, one.q);
     ak_general_partials(seq, theta, td, one.W_fixed, one.W_body, one.W_fixed_dot, one.W_body_dot);
-    check(seq->name, "R, q, W, W_dot at once bit-identical to one by one",
-          memcmp(&all, &one, sizeof one) == 0);
-    check(seq->name, "R, q, W, W_dot of the table entry and of a copy bit-identical",
-          memcmp(&all, &all_generic, sizeof all) == 0);
+    ak_check(memcmp(&all, &one, sizeof one) == 0,
+             "%s: R, q, W, W_dot at once bit-identical to one by one", seq->name);
+    ak_check(memcmp(&all, &all_generic, sizeof all) == 0,
+             "%s: R, q, W, W_dot of the table entry and of a copy bit-identical", seq->name);
 }
 
 /* ak_half_angle_sines: sin and cos of the half angle in [-pi/2, pi/2] (theta / 2, or theta / 2 +
@@ -397,10 +403,11 @@ static void check_half_angles(double x) {
         const double s = sin(h), c = cos(h);
         const double d = fmax(fabs(half.sin[k] - s), fabs(half.cos[k] - c));
         worst_half_angle_difference = fmax(worst_half_angle_difference, d);
-        check("half angles", "ak_half_angle_sines = sin, cos of the half angle", d <= 4.5e-16);
-        check("half angles", "cos of the half angle >= 0", half.cos[k] >= 0.0);
-        check("half angles", "sin^2 + cos^2 = 1",
-              fabs(half.sin[k] * half.sin[k] + half.cos[k] * half.cos[k] - 1.0) <= 4.5e-16);
+        ak_check(d <= 4.5e-16,
+                 "%s: ak_half_angle_sines = sin, cos of the half angle", "half angles");
+        ak_check(half.cos[k] >= 0.0, "%s: cos of the half angle >= 0", "half angles");
+        ak_check(fabs(half.sin[k] * half.sin[k] + half.cos[k] * half.cos[k] - 1.0) <= 4.5e-16,
+                 "%s: sin^2 + cos^2 = 1", "half angles");
     }
 }
 
@@ -457,6 +464,6 @@ int main(void) {
     }
     printf("half angles from the angles' sines, 20066 x 3 angles: worst difference %.2e\n",
            worst_half_angle_difference);
-    printf("%d checks, %d failures\n", checks, failures);
-    return failures == 0 ? 0 : 1;
+    printf("%d checks, %d failures\n", ak_check_count(), ak_check_failures());
+    return ak_check_exit_status();
 }

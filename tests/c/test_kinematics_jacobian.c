@@ -12,6 +12,7 @@
 #include "kinematics_123.h"
 #include "kinematics_general_jacobian.h"
 #include "sequences.h"
+#include "test_check.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,19 +20,6 @@
 
 /* The omega and alpha rows: the first 12 outputs of the general core. */
 enum { N_IN = AK_GENERAL_N_INPUTS, N_OUT = 12 };
-
-static int failures = 0;
-static int checks = 0;
-
-static void check_close(const char *what, int i, int j, double got, double expected,
-                        double tolerance) {
-    checks++;
-    if (!(fabs(got - expected) <= tolerance)) {
-        failures++;
-        printf("FAIL %s [%d][%d]: got %.17g expected %.17g (tolerance %g)\n", what, i, j, got,
-               expected, tolerance);
-    }
-}
 
 static double random_in(double low, double high) {
     return low + (high - low) * ((double)rand() / (double)RAND_MAX);
@@ -75,9 +63,10 @@ static void check_jacobian(const double u[N_IN], double scale) {
             /* d y / d u scales as (scale of y) / (scale of u). */
             const double y_scale = i < 6 ? scale : scale * scale;
             const double u_scale = j < 3 ? 1.0 : (j < 6 ? scale : scale * scale);
-            check_close("J vs finite difference", i, j, J[i][j], fd, 1e-8 * y_scale / u_scale);
+            ak_check_close(J[i][j], fd, 1e-8 * y_scale / u_scale,
+                           "J vs finite difference [%d][%d]", i, j);
             if (!DEPENDS[i][j]) {
-                check_close("structural zero", i, j, J[i][j], 0.0, 0.0);
+                ak_check_close(J[i][j], 0.0, 0.0, "structural zero [%d][%d]", i, j);
             }
         }
     }
@@ -110,8 +99,9 @@ static void check_jerk(const double u[N_IN], const double tddd[3], double scale)
     for (int k = 0; k < 3; k++) {
         const double dfixed = (y[0][6 + k] - 8 * y[1][6 + k] + 8 * y[2][6 + k] - y[3][6 + k]) / (12 * h);
         const double dbody = (y[0][9 + k] - 8 * y[1][9 + k] + 8 * y[2][9 + k] - y[3][9 + k]) / (12 * h);
-        check_close("jerk_fixed vs d(alpha_fixed)/dt", k, 0, jf[k], dfixed, 1e-7 * pow(scale, 3));
-        check_close("jerk_body vs d(alpha_body)/dt", k, 0, jb[k], dbody, 1e-7 * pow(scale, 3));
+        ak_check_close(jf[k], dfixed, 1e-7 * pow(scale, 3),
+                       "jerk_fixed vs d(alpha_fixed)/dt [%d]", k);
+        ak_check_close(jb[k], dbody, 1e-7 * pow(scale, 3), "jerk_body vs d(alpha_body)/dt [%d]", k);
     }
 }
 
@@ -133,6 +123,6 @@ int main(void) {
         check_jacobian(u, scale);
         check_jerk(u, tddd, scale);
     }
-    printf("%d checks, %d failures\n", checks, failures);
-    return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    printf("%d checks, %d failures\n", ak_check_count(), ak_check_failures());
+    return ak_check_exit_status();
 }

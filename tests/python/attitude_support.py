@@ -1,21 +1,18 @@
-"""What the AttitudePropagator tests share: the FMU and its instances (conftest.Instance), the
+"""What the AttitudePropagator tests share: the FMU and its instances (conftest.new_instance), the
 closed-form references (constant rotation, coning motion; derived here with sympy, independently
 of the C core) and a co-simulation driver through fmpy.
 
 Quaternions are numpy arrays (w, x, y, z), scalar first, Hamilton product."""
 import ctypes
-import os
-import pathlib
+import functools
 
 import numpy as np
 import pytest
 import sympy as sp
-from fmpy import extract, read_model_description
 
-from conftest import ROOT, Instance
+from conftest import fmu_files, fmu_path_of
 
-ATTITUDE_FMU_PATH = pathlib.Path(os.environ.get("AK_ATTITUDE_FMU",
-                                                ROOT / "dist" / "AttitudePropagator.fmu"))
+ATTITUDE_FMU_PATH = fmu_path_of("AttitudePropagator")
 OMEGA = ["omega[1]", "omega[2]", "omega[3]"]
 OMEGA_DOT = ["omega_dot[1]", "omega_dot[2]", "omega_dot[3]"]
 Q = ["q[1]", "q[2]", "q[3]", "q[4]"]
@@ -25,29 +22,18 @@ FRAME = {"fixed": 1, "body": 2}
 
 @pytest.fixture(scope="session")
 def attitude_model_description():
-    assert ATTITUDE_FMU_PATH.is_file(), f"{ATTITUDE_FMU_PATH} is missing: bash scripts/build.sh"
-    return read_model_description(str(ATTITUDE_FMU_PATH))
+    return fmu_files("AttitudePropagator")[1]
 
 
 @pytest.fixture(scope="session")
-def attitude_unzipdir(tmp_path_factory):
-    return extract(str(ATTITUDE_FMU_PATH), unzipdir=str(tmp_path_factory.mktemp("attitude")))
+def attitude_unzipdir():
+    return fmu_files("AttitudePropagator")[0]
 
 
 @pytest.fixture
-def make_attitude_instance(attitude_unzipdir, attitude_model_description):
-    """Creates AttitudePropagator instances, all freed at the end of the test."""
-    created = []
-
-    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
-        instance = Instance(attitude_unzipdir, attitude_model_description, name=name,
-                            logging_on=logging_on, fmi_type=fmi_type)
-        created.append(instance)
-        return instance
-
-    yield make
-    for instance in created:
-        instance.free()
+def make_attitude_instance(new_instance):
+    """FMI 2 instances of AttitudePropagator (conftest's new_instance)."""
+    return functools.partial(new_instance, "AttitudePropagator")
 
 
 # --- quaternions (numpy, independent of the C core) ----------------------------------------------

@@ -1,12 +1,15 @@
 """Shared fixtures: the built FMU, its model description, and instances driven through fmpy with
 their log messages captured."""
+import atexit
 import ctypes
 import functools
 import json
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
+import tempfile
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -20,7 +23,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 BUILD_DIR = ROOT / "build"
 sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
 sys.path.insert(0, str(ROOT))  # codegen: the project's facts and the model descriptions
-from codegen import project  # noqa: E402
+from codegen import models, project  # noqa: E402
 
 # The sequences a quick run (pytest -m "not slow") checks: one body-fixed Tait-Bryan, one
 # space-fixed proper Euler; the other 22 cases of each per-sequence test are marked slow.
@@ -41,8 +44,7 @@ FMU_ENVIRONMENT = {"AngularKinematics": "AK_FMU", "EulerRates": "AK_EULER_FMU",
 
 def description_path_of(model):
     """The model's modelDescription.xml in the repository (generated from its description.py)."""
-    return ROOT / "modelDescription.xml" if model == "AngularKinematics" else \
-        ROOT / "fmu_src" / "models" / model / "modelDescription.xml"
+    return models.load(model).model_description
 
 
 @functools.lru_cache(maxsize=None)
@@ -107,14 +109,25 @@ def fmu_path():
     return str(FMU_PATH)
 
 
+@functools.lru_cache(maxsize=None)
+def fmu_files(model):
+    """(unzipped folder, fmpy's model description) of the model's FMI 2 FMU, extracted once per
+    test process: every FMI 2 instance of the model is made from them."""
+    path = fmu_path_of(model)
+    assert path.is_file(), f"{path} is missing: build it first (bash scripts/build.sh)"
+    folder = tempfile.mkdtemp(prefix=f"{model}2_")
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    return extract(str(path), unzipdir=folder), read_model_description(str(path))
+
+
 @pytest.fixture(scope="session")
 def model_description(fmu_path):
-    return read_model_description(fmu_path)
+    return fmu_files("AngularKinematics")[1]
 
 
 @pytest.fixture(scope="session")
-def unzipdir(fmu_path, tmp_path_factory):
-    return extract(fmu_path, unzipdir=str(tmp_path_factory.mktemp("fmu")))
+def unzipdir(fmu_path):
+    return fmu_files("AngularKinematics")[0]
 
 
 def c_table_of(model):
@@ -125,9 +138,8 @@ def c_table_of(model):
 
 
 def abuse_program(program, model):
-    """build/<program> for AngularKinematics, build/<program>_<Model> for the others
-    (cmake/abuse_tests.cmake)."""
-    return BUILD_DIR / (program if model == "AngularKinematics" else f"{program}_{model}")
+    """build/<program>_<Model> (cmake/abuse_tests.cmake)."""
+    return BUILD_DIR / f"{program}_{model}"
 
 
 @functools.lru_cache(maxsize=None)
@@ -161,13 +173,10 @@ class Model:
     """One model as built: its FMU, fmpy's reading of its model description, the FMU unzipped and
     the C variable table (names by causality in value-reference order)."""
 
-    def __init__(self, name, unzip_root):
+    def __init__(self, name):
         self.name = name
-        path = fmu_path_of(name)
-        assert path.is_file(), f"{path} is missing: build it first (bash scripts/build.sh)"
-        self.fmu_path = str(path)
-        self.description = read_model_description(self.fmu_path)
-        self.unzipdir = extract(self.fmu_path, unzipdir=str(unzip_root))
+        self.fmu_path = str(fmu_path_of(name))
+        self.unzipdir, self.description = fmu_files(name)
         self.c_table = c_table_of(name)
         variables = self.c_table["variables"]
         self.inputs = [v["name"] for v in variables if v["causality"] == "input"]
@@ -181,25 +190,47 @@ class Model:
 
 
 @pytest.fixture(scope="session", params=project.MODELS)
-def model(request, tmp_path_factory):
+def model(request):
     """Each model of codegen.project.MODELS in turn, for the concerns every model shares."""
-    return Model(request.param, tmp_path_factory.mktemp(request.param))
+    return Model(request.param)
 
 
 @pytest.fixture
-def make_model_instance(model):
-    """Creates instances of the `model` under test, all freed at the end of the test."""
+def new_instance():
+    """The one way a test gets an instance: new_instance(model, name=..., logging_on=...,
+    fmi_type="CoSimulation" or "ModelExchange", fmi_version=2 or 3) gives an Instance (FMI 2,
+    below) or an fmi3_support.Instance3 of the model, freed at the end of the test. The fixtures
+    make_instance, make_euler_instance, make_model_instance and attitude_support's
+    make_attitude_instance are it for one model."""
     created = []
 
-    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
-        instance = Instance(model.unzipdir, model.description, name=name, logging_on=logging_on,
-                            fmi_type=fmi_type)
+    def make(model, name="instance", logging_on=False, fmi_type="CoSimulation", fmi_version=2):
+        if fmi_version == 3:
+            from fmi3_support import Instance3
+            instance = Instance3(model, fmi_type=fmi_type, name=name, logging_on=logging_on)
+        else:
+            unzipdir, description = fmu_files(model)
+            instance = Instance(unzipdir, description, name=name, logging_on=logging_on,
+                                fmi_type=fmi_type)
         created.append(instance)
         return instance
 
     yield make
     for instance in created:
         instance.free()
+
+
+@pytest.fixture(params=[2, 3], ids=["fmi2", "fmi3"])
+def layer(request):
+    """Each FMI layer in turn (fmi_layers.Layer), for the concerns both share."""
+    from fmi_layers import Layer
+    return Layer(request.param)
+
+
+@pytest.fixture
+def make_model_instance(model, new_instance):
+    """FMI 2 instances of the `model` under test (new_instance)."""
+    return functools.partial(new_instance, model.name)
 
 
 @pytest.fixture(scope="session")
@@ -210,12 +241,12 @@ def euler_fmu_path():
 
 @pytest.fixture(scope="session")
 def euler_model_description(euler_fmu_path):
-    return read_model_description(euler_fmu_path)
+    return fmu_files("EulerRates")[1]
 
 
 @pytest.fixture(scope="session")
-def euler_unzipdir(euler_fmu_path, tmp_path_factory):
-    return extract(euler_fmu_path, unzipdir=str(tmp_path_factory.mktemp("euler_fmu")))
+def euler_unzipdir(euler_fmu_path):
+    return fmu_files("EulerRates")[0]
 
 
 class Instance:
@@ -300,32 +331,12 @@ class Instance:
 
 
 @pytest.fixture
-def make_instance(unzipdir, model_description):
-    """Creates instances, all freed at the end of the test."""
-    created = []
-
-    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
-        instance = Instance(unzipdir, model_description, name=name, logging_on=logging_on,
-                            fmi_type=fmi_type)
-        created.append(instance)
-        return instance
-
-    yield make
-    for instance in created:
-        instance.free()
+def make_instance(new_instance):
+    """FMI 2 instances of AngularKinematics (new_instance)."""
+    return functools.partial(new_instance, "AngularKinematics")
 
 
 @pytest.fixture
-def make_euler_instance(euler_unzipdir, euler_model_description):
-    """Creates EulerRates instances, all freed at the end of the test."""
-    created = []
-
-    def make(name="instance", logging_on=False, fmi_type="CoSimulation"):
-        instance = Instance(euler_unzipdir, euler_model_description, name=name,
-                            logging_on=logging_on, fmi_type=fmi_type)
-        created.append(instance)
-        return instance
-
-    yield make
-    for instance in created:
-        instance.free()
+def make_euler_instance(new_instance):
+    """FMI 2 instances of EulerRates (new_instance)."""
+    return functools.partial(new_instance, "EulerRates")

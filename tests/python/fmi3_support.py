@@ -5,9 +5,11 @@ fmpy's FMI 3 wrappers size some buffers per value reference, not per array eleme
 or nSensitivity is not given): this module passes nValues explicitly to getFloat64 and calls the
 raw functions (fmu._functions[...]) for output, directional and adjoint derivatives and for every
 call whose status a test checks (fmpy raises on fmi3Error)."""
+import atexit
 import ctypes
 import os
 import pathlib
+import shutil
 import tempfile
 
 import numpy as np
@@ -34,8 +36,9 @@ def fmu3_path(model):
 def unzipped(model):
     if model not in _unzipped:
         path = fmu3_path(model)
-        _unzipped[model] = (extract(str(path), unzipdir=tempfile.mkdtemp(prefix=f"{model}3_")),
-                            read_model_description(str(path)))
+        folder = tempfile.mkdtemp(prefix=f"{model}3_")
+        atexit.register(shutil.rmtree, folder, ignore_errors=True)
+        _unzipped[model] = (extract(str(path), unzipdir=folder), read_model_description(str(path)))
     return _unzipped[model]
 
 

@@ -30,8 +30,11 @@ def states(seed):
     return np.hstack([angles, rates])
 
 
-def cases(model):
-    frames = (1, 2) if model == "EulerRates" else (None,)
+def cases(md):
+    """(sequence, frame) pairs: every sequence, times every value of the `frame` parameter's
+    enumeration for a model that has one."""
+    frame = next((v for v in md.modelVariables if v.name == "frame"), None)
+    frames = tuple(int(item.value) for item in frame.declaredType.items) if frame else (None,)
     return [(sequence, frame) for sequence in range(1, 25) for frame in frames]
 
 
@@ -57,7 +60,7 @@ def digests(fmu_path, output_names=None):
     addLoggerProxy(ctypes.byref(callbacks))
     fmu.instantiate(callbacks=callbacks)
     result = {}
-    for n, (sequence, frame) in enumerate(cases(model)):
+    for n, (sequence, frame) in enumerate(cases(md)):
         fmu.reset()
         fmu.setInteger([vr["sequence"]], [sequence])
         if frame is not None:
@@ -92,7 +95,7 @@ def main():
         sys.exit(__doc__)
     import pathlib
     record = {}
-    for name in ("AngularKinematics", "EulerRates"):
+    for name in ("AngularKinematics", "EulerRates"):  # the models of 0.2
         path = str(pathlib.Path(sys.argv[2]) / f"{name}.fmu")
         every = [v.name for v in read_model_description(path).modelVariables
                  if v.causality == "output"]

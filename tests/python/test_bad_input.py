@@ -1,7 +1,9 @@
 """Bad input, for every model: every kind gets fmi2Error and one message that names the function,
 the variable and the value, and the instance keeps its last valid values. The exact wording is the
 C table's (tests/c/fmi2_bad_input_*.c, checked in test_bad_input_table.py); where a case here is a
-row of it, the message must be that row's."""
+row of it, the message must be that row's. Non-finite inputs, outputs set and unknown value
+references run for both layers (`layer`: fmi3Error and the FMI 3 function's message too);
+test_fmi3_bad_input.py has the FMI 3 layer's own cases."""
 import ctypes
 import math
 
@@ -49,50 +51,71 @@ def call_set_real(instance, vrs, values):
 
 
 @pytest.mark.parametrize("bad", NON_FINITE)
-def test_non_finite_input_is_refused(bad, model, make_model_instance):
-    for name in model.inputs:
-        instance, before = initialized(make_model_instance, model)
-        first, vr = instance.vr[model.inputs[0]], instance.vr[name]
-        # The bad value last in a call that also sets a good one: the good one must not be applied either.
-        assert call_set_real(instance, [first, vr], [2.5, bad]) == 3
+def test_non_finite_input_is_refused(bad, layer, model, new_instance):
+    """Each input element in turn, in a set call that also sets a good value: refused with one
+    error naming the function, the element and the value; the good value is not applied either,
+    nothing changes, and the instance goes on (both layers)."""
+    for index in range(len(model.inputs)):
+        instance = layer.started(new_instance, model, "target")
+        before = layer.values(instance)
+        status, name, function = layer.set_one_bad_input(instance, index, bad)
+        assert status == 3
         message = the_one_error(instance)
-        assert message.startswith("fmi2SetReal: "), message
-        assert f"{name} = {bad:g} (vr[1] = {vr})" in message and "not finite" in message, message
-        assert agrees_with_c_row(model, f"fmi2SetReal(c, {{{first}, {vr}}}, 2, {{2.5, {c_number(bad)}}})",
-                                 message)
-        assert unchanged(instance, model, before)
-        assert instance.call("fmi2DoStep", 0.0, 0.1, 1) == 0  # the instance goes on
+        assert message.startswith(f"{function}: "), message
+        assert name in message and f"{bad:g}" in message, message
+        if layer.version == 2:
+            first, vr = instance.vr[model.inputs[0]], instance.vr[name]
+            assert f"{name} = {bad:g} (vr[1] = {vr})" in message and "not finite" in message, message
+            assert agrees_with_c_row(model, f"fmi2SetReal(c, {{{first}, {vr}}}, 2, "
+                                            f"{{2.5, {c_number(bad)}}})", message)
+        assert layer.values(instance) == before
+        assert layer.step(instance, 0.25, 0.1) == (0, 0.35)  # the instance goes on
         instance.free()
 
 
-def test_output_cannot_be_set(model, make_model_instance):
-    for name in model.outputs:
-        instance, before = initialized(make_model_instance, model)
+def test_output_cannot_be_set(layer, model, new_instance):
+    """Each output in turn: refused with one error naming it as an output, nothing changes, the
+    instance goes on (both layers)."""
+    names = layer.output_names(layer.started(new_instance, model, "names"))
+    for name in names:
+        instance = layer.started(new_instance, model, "target")
+        before = layer.values(instance)
         vr = instance.vr[name]
-        assert call_set_real(instance, [vr], [1.0]) == 3
+        status, _, function = layer.real_call(instance, "Set", [vr], layer.size_of(instance, name),
+                                              1.0)
+        assert status == 3
         message = the_one_error(instance)
-        assert message.startswith("fmi2SetReal: "), message
-        assert f"vr[0] = {vr} is {name}, an output" in message, message
-        assert agrees_with_c_row(model, f"fmi2SetReal(c, {{{vr}}}, 1, {{1}})", message)
-        assert unchanged(instance, model, before)
+        assert message.startswith(f"{function}: "), message
+        assert f"[0] = {vr} is {name}, an output" in message, message
+        if layer.version == 2:
+            assert f"vr[0] = {vr} is {name}, an output" in message, message
+            assert agrees_with_c_row(model, f"fmi2SetReal(c, {{{vr}}}, 1, {{1}})", message)
+        assert layer.values(instance) == before
+        assert layer.step(instance, 0.25, 0.1) == (0, 0.35)
         instance.free()
 
 
-@pytest.mark.parametrize("function", ["fmi2SetReal", "fmi2GetReal"])
+@pytest.mark.parametrize("function", ["Set", "Get"])
 @pytest.mark.parametrize("beyond", [1, 1000, 2**32 - 1])
-def test_unknown_value_reference(function, beyond, model, make_model_instance):
-    instance, before = initialized(make_model_instance, model)
+def test_unknown_value_reference(function, beyond, layer, model, new_instance):
+    """A value reference past the model's last, beside a good one (FMI 2: 0, FMI 3: the first
+    input array): refused with one error naming it, nothing written or changed (both layers)."""
+    instance = layer.started(new_instance, model, "target")
+    before = layer.values(instance)
     vr = min(model.largest_vr + beyond, 2**32 - 1)
-    vrs = (ctypes.c_uint * 2)(0, vr)
-    values = (ctypes.c_double * 2)(7.0, 7.0)
-    assert instance.call(function, vrs, 2, values) == 3
+    n_values = 2 if layer.version == 2 else layer.size_of(instance, layer.input_names(instance)[0]) + 1
+    status, values, name = layer.real_call(instance, function, [0, vr], n_values)
+    assert status == 3
     message = the_one_error(instance)
-    assert message.startswith(f"{function}: vr[1] = {vr} is not a value reference"), message
-    assert f"(0 to {model.largest_vr})" in message, message
-    assert agrees_with_c_row(model, f"{function}(c, {{0, {vr}}}, 2, {{7, 7}})", message)
-    if function == "fmi2GetReal":
-        assert list(values) == [7.0, 7.0]  # nothing written either
-    assert unchanged(instance, model, before)
+    assert message.startswith(f"{name}: "), message
+    assert f"[1] = {vr} is not a value reference" in message, message
+    if layer.version == 2:
+        assert message.startswith(f"{name}: vr[1] = {vr} is not a value reference"), message
+        assert f"(0 to {model.largest_vr})" in message, message
+        assert agrees_with_c_row(model, f"{name}(c, {{0, {vr}}}, 2, {{7, 7}})", message)
+    if function == "Get":
+        assert values == [7.0] * n_values  # nothing written either
+    assert layer.values(instance) == before
 
 
 @pytest.mark.parametrize("function", ["fmi2SetReal", "fmi2GetReal", "fmi2SetInteger", "fmi2GetInteger",

@@ -1,13 +1,14 @@
 """fmi2GetDirectionalDerivative: the exact Jacobian of every output with respect to every input,
 for any seed and any subset of unknowns and knowns, checked against 60-digit central differences
-of the independent sympy reference; its zero pattern is the <ModelStructure> dependencies."""
+of the independent sympy reference; its zero pattern is the <ModelStructure> dependencies. Bad
+arguments are refused in both layers (fmi3GetDirectionalDerivative too: `layer`)."""
 import ctypes
 
 import numpy as np
 import pytest
 
 import reference
-from conftest import value_references_of
+from conftest import Model, value_references_of
 
 # The first value reference past AngularKinematics' last (a new variable takes it).
 PAST = len(value_references_of("AngularKinematics"))
@@ -103,24 +104,59 @@ def test_follows_the_current_inputs(make_instance):
     assert scaled_error(got, reference.jacobian(POINTS[1])[:, 1]).max() < 1e-14
 
 
-@pytest.mark.parametrize("unknowns,knowns,seed,message", [
-    ([9, 3], [0], [1.0], "fmi2GetDirectionalDerivative: vUnknown_ref[1] = 3 is theta_dot[1], an input; "
-                         "expected an output"),
-    ([9], [0, 12], [1.0, 1.0], "fmi2GetDirectionalDerivative: vKnown_ref[1] = 12 is omega_body[1], an "
-                               "output; expected an input"),
-    ([9], [70], [1.0], "fmi2GetDirectionalDerivative: vKnown_ref[0] = 70 is sequence, a parameter; "
-                       "expected an input"),
-    ([PAST], [0], [1.0], f"fmi2GetDirectionalDerivative: vUnknown_ref[0] = {PAST} is not a value "
-                         f"reference of this FMU (0 to {PAST - 1})"),
-    ([9], [0], [float("nan")], "fmi2GetDirectionalDerivative: dvKnown[0] = nan (seed of theta[1]) is "
-                               "not finite"),
-])
-def test_bad_arguments_are_refused_and_write_nothing(unknowns, knowns, seed, message, make_instance):
-    instance = instance_at(make_instance, POINTS[0])
-    status, got = directional(instance, unknowns, knowns, seed)
+# Bad arguments, per layer: FMI 2 (unknowns, knowns, seed, message) by scalar value references;
+# FMI 3 (unknowns, knowns, seed, nSensitivity, message) by array value references.
+BAD_ARGUMENTS = {
+    "unknown is an input": {
+        2: ([9, 3], [0], [1.0], "fmi2GetDirectionalDerivative: vUnknown_ref[1] = 3 is theta_dot[1], "
+                                "an input; expected an output"),
+        3: ([9, 3], [0], [1.0, 0.0, 0.0], 6, "fmi3GetDirectionalDerivative: unknowns[1] = 3 is "
+                                             "theta_dot, an input; expected an output")},
+    "known is an output": {
+        2: ([9], [0, 12], [1.0, 1.0], "fmi2GetDirectionalDerivative: vKnown_ref[1] = 12 is "
+                                      "omega_body[1], an output; expected an input"),
+        3: ([9], [12], [1.0, 0.0, 0.0], 3, "fmi3GetDirectionalDerivative: knowns[0] = 12 is "
+                                           "omega_body, an output; expected an input")},
+    "known is a parameter": {
+        2: ([9], [70], [1.0], "fmi2GetDirectionalDerivative: vKnown_ref[0] = 70 is sequence, a "
+                              "parameter; expected an input"),
+        3: ([9], [70], [1.0], 3, "fmi3GetDirectionalDerivative: knowns[0] = 70 is sequence, a "
+                                 "parameter; expected an input")},
+    "past the last value reference": {
+        2: ([PAST], [0], [1.0], f"fmi2GetDirectionalDerivative: vUnknown_ref[0] = {PAST} is not a "
+                                f"value reference of this FMU (0 to {PAST - 1})"),
+        3: ([PAST], [0], [1.0, 0.0, 0.0], 3, f"fmi3GetDirectionalDerivative: unknowns[0] = {PAST} is "
+                                             "not a value reference of this FMU's FMI 3 variables")},
+    "NaN seed": {
+        2: ([9], [0], [float("nan")], "fmi2GetDirectionalDerivative: dvKnown[0] = nan (seed of "
+                                      "theta[1]) is not finite"),
+        3: ([9], [0], [1.0, float("nan"), 0.0], 3, "fmi3GetDirectionalDerivative: seed[1] = nan is "
+                                                   "not finite")},
+}
+
+
+def directional3(instance, unknowns, knowns, seed, n_sensitivity):
+    """Raw fmi3GetDirectionalDerivative by array value references; (status, result)."""
+    out = (ctypes.c_double * n_sensitivity)(*([-7.0] * n_sensitivity))
+    status = instance.call("fmi3GetDirectionalDerivative", (ctypes.c_uint32 * len(unknowns))(*unknowns),
+                           len(unknowns), (ctypes.c_uint32 * len(knowns))(*knowns), len(knowns),
+                           (ctypes.c_double * len(seed))(*seed), len(seed), out, n_sensitivity)
+    return status, np.array(out)
+
+
+@pytest.mark.parametrize("kind", list(BAD_ARGUMENTS))
+def test_bad_arguments_are_refused_and_write_nothing(kind, layer, new_instance):
+    """Both layers: fmi2Error/fmi3Error, exactly one message naming the argument, nothing written,
+    nothing changed, and the instance goes on."""
+    instance = layer.started(new_instance, Model("AngularKinematics"), "target")
+    before = layer.values(instance)
+    *arguments, message = BAD_ARGUMENTS[kind][layer.version]
+    status, got = (directional if layer.version == 2 else directional3)(instance, *arguments)
     assert status == 3
     assert instance.errors() == [message]
     assert np.all(got == -7.0)
+    assert layer.values(instance) == before
+    assert layer.step(instance, 0.25, 0.1) == (0, 0.35)
 
 
 def test_null_arrays_are_refused(make_instance):

@@ -2,7 +2,7 @@
 EulerRates(AngularKinematics(x)) = x for every sequence and both frames, agreement with the
 independent reference, the behaviour near and at the singular configuration (warning, fmi2Discard,
 last valid values kept, recovery, co-simulation step status, model exchange), its parameters and
-bad values, and the capabilities it claims or refuses."""
+bad values, and the capabilities it claims (what it refuses: test_undeclared_capabilities.py)."""
 import ctypes
 
 import numpy as np
@@ -233,21 +233,6 @@ def test_parameters_and_their_bad_values(make_euler_instance):
     instance.fmu.setupExperiment(startTime=0.0)
     instance.fmu.enterInitializationMode()
     assert instance.get_integer(["sequence", "frame"]) == [1, 1]
-
-
-def test_capabilities_it_does_not_claim_are_refused_with_the_flag(make_euler_instance):
-    instance = euler(make_euler_instance, inputs=GOOD_INPUTS)
-    one = (ctypes.c_uint * 1)(instance.vr["theta_dot[1]"])
-    known = (ctypes.c_uint * 1)(0)
-    out = (ctypes.c_double * 1)()
-    assert instance.call("fmi2GetDirectionalDerivative", one, 1, known, 1,
-                         (ctypes.c_double * 1)(1.0), out) == 3
-    assert instance.call("fmi2GetRealOutputDerivatives", one, 1, (ctypes.c_int * 1)(1), out) == 3
-    assert instance.errors() == [
-        'fmi2GetDirectionalDerivative: not provided by EulerRates (modelDescription.xml: '
-        'providesDirectionalDerivative="false")',
-        'fmi2GetRealOutputDerivatives: not provided by EulerRates (modelDescription.xml: '
-        'maxOutputDerivativeOrder="0")']
 
 
 def test_fmu_state_round_trip_with_parameters(make_euler_instance):

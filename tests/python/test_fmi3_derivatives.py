@@ -2,15 +2,14 @@
 fmi3GetAdjointDerivative are the same exact Jacobian (the adjoint is its transpose, its zeros are
 exactly those of the per-element dependencies, which fmi3GetVariableDependencies gives as the
 description states them); fmi3GetOutputDerivatives gives d omega/dt = alpha bit for bit and
-d alpha/dt consistent with a finite difference. EulerRates declares none of them and refuses
-them with a message naming the flag."""
+d alpha/dt consistent with a finite difference. What a model does not declare it refuses:
+test_undeclared_capabilities.py, both layers."""
 import ctypes
 
 import numpy as np
-import pytest
 
 from codegen.models import load
-from fmi3_support import ERROR, OK, Instance3, doubles, vrs
+from fmi3_support import OK, Instance3, doubles, vrs
 
 INPUTS = ["theta", "theta_dot", "theta_ddot"]
 
@@ -107,22 +106,5 @@ def test_d_omega_dt_is_alpha_and_d_alpha_dt_matches_finite_differences():
 
         difference = (alpha_at(h) - alpha_at(-h)) / (2 * h)
         assert np.allclose(derivative[6:], difference, rtol=1e-7, atol=1e-7)
-    finally:
-        instance.free()
-
-
-def test_euler_rates_refuses_what_it_does_not_declare():
-    instance = Instance3("EulerRates")
-    try:
-        instance.initialize()
-        out = (ctypes.c_double * 3)()
-        assert instance.call("fmi3GetOutputDerivatives", vrs([9]), 1, (ctypes.c_int32 * 1)(1),
-                             out, 3) == ERROR
-        assert 'maxOutputDerivativeOrder="0"' in instance.errors()[-1]
-        for function, flag in (("fmi3GetDirectionalDerivative", "providesDirectionalDerivatives"),
-                               ("fmi3GetAdjointDerivative", "providesAdjointDerivatives")):
-            assert instance.call(function, vrs([9]), 1, vrs([0]), 1, doubles([1, 0, 0]), 3, out,
-                                 3) == ERROR
-            assert instance.errors()[-1].startswith(function) and flag in instance.errors()[-1]
     finally:
         instance.free()

@@ -18,7 +18,7 @@ from fmi3_support import MODELS, unzipped
 
 # One wine prefix (build-win64/wineprefix) for both wine test files: with pytest-xdist they run
 # in one worker (--dist loadgroup), so that two wine processes never create the prefix at once.
-pytestmark = pytest.mark.xdist_group("wine")
+pytestmark = [pytest.mark.xdist_group("wine"), pytest.mark.external]
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 STEPS = "4"

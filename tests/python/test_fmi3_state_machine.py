@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from fmi3_support import MODELS, ERROR, OK, Instance3, doubles, fmu3_path, vrs
+from fmi3_support import MODELS, ERROR, OK, Instance3, doubles, fmu3_path, unzipped, vrs
 
 CS_STATES = ["Instantiated", "Initialization Mode", "Step Mode", "Terminated"]
 ME_STATES = ["Instantiated", "Initialization Mode", "Event Mode", "Continuous-Time Mode",
@@ -145,18 +145,22 @@ def test_function_allowed_exactly_in_the_standard_states(function, fmi_type):
 @pytest.mark.parametrize("model", MODELS)
 @pytest.mark.parametrize("fmi_type", ["CoSimulation", "ModelExchange"])
 def test_fmpy_simulates_both_interfaces(model, fmi_type):
-    theta = [0.3, -0.2, 0.9]
-    start = ({"sequence": 13, "theta": theta} if model != "AttitudePropagator" else
-             {"sequence": 13, "omega": theta, "q0": [0.5, 0.5, 0.5, -0.5]})
+    md = unzipped(model)[1]
+    variables = {v.name: v for v in md.modelVariables}
+    first_input = next(v.name for v in md.modelVariables if v.causality == "input")
+    start = {"sequence": 13, first_input: [0.3, -0.2, 0.9]}
+    if "q0" in variables:  # a model whose state q starts at the parameter q0
+        start["q0"] = [0.5, 0.5, 0.5, -0.5]
     result = simulate_fmu(str(fmu3_path(model)), fmi_type=fmi_type, stop_time=0.5,
                           output_interval=0.1, start_values=start)
     assert len(result) == 6 and result["time"][-1] == pytest.approx(0.5)
-    first_output = "theta_dot" if model == "EulerRates" else "omega_fixed"
-    assert result[first_output].shape == (6, 3)
-    if model != "EulerRates":  # unit; AttitudePropagator's state q drifts under CVode (ME)
+    for output in (v for v in md.modelVariables if v.causality == "output"):
+        shape = tuple(int(d.start) for d in output.dimensions)
+        assert result[output.name].shape == (6, *shape), output.name
+    if "q" in variables:  # unit; a state q drifts under CVode (ME)
         norm2 = result["q"][:, 0] ** 2 + (result["q"][:, 1:] ** 2).sum(axis=1)
-        assert np.allclose(norm2, 1.0, rtol=0, atol=1e-3 if model == "AttitudePropagator" else 1e-8)
-    if model == "AttitudePropagator":  # the state starts at q0 and moves (CVode or the step)
+        assert np.allclose(norm2, 1.0, rtol=0, atol=1e-3 if md.derivatives else 1e-8)
+    if "q0" in variables:  # the state starts at q0 and moves (CVode or the step)
         assert result["q"][0].tolist() == [0.5, 0.5, 0.5, -0.5]
         assert not np.allclose(result["q"][-1], result["q"][0])
 
@@ -210,11 +214,15 @@ def test_reset_returns_to_instantiated_with_start_values():
         instance.initialize(parameters={"sequence": 5}, inputs={"theta": [1.0, 2.0, 0.5]})
         assert instance.do_step(0.0, 0.1) == (OK, 0.1)
         assert instance.call("fmi3Reset") == OK
-        # Instantiated again: the start values are read back, and the outputs are those of
-        # the start values (all zero: every angle and rate starts at 0).
+        # Instantiated again: the variables read their start values, not the step's, and the
+        # outputs are those of the start values (all zero: every angle and rate starts at 0).
         status, values = instance.get_raw(["theta", "omega_fixed"])
         assert status == OK and values["theta"].tolist() == [0.0, 0.0, 0.0]
         assert values["omega_fixed"].tolist() == [0.0, 0.0, 0.0]
+        assert instance.set({"theta": [0.25, 0.5, 0.75]}) == OK  # and what was set since
+        status, values = instance.get_raw(["theta"])
+        assert status == OK and values["theta"].tolist() == [0.25, 0.5, 0.75]
+        assert instance.call("fmi3Reset") == OK
         instance.initialize()
         assert instance.get(["theta"])["theta"].tolist() == [0.0, 0.0, 0.0]
         sequence = (ctypes.c_int64 * 1)()

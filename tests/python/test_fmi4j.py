@@ -26,6 +26,7 @@ from cross_check import (START, STEP, STOP, real_names, reference_inputs, simula
                          write_csv)
 
 JAR = ROOT / "examples" / "fmi4j" / "target" / "fmi4j-driver.jar"
+pytestmark = pytest.mark.external  # the JVM
 
 
 def fmi_version(fmu):

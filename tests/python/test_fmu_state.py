@@ -1,8 +1,9 @@
 """FMU state: get, set, free, serialize, deserialize. The serialized form is self-contained (fixed
 little-endian layout, format version, GUID, CRC-32); corrupt, truncated and foreign bytes are
 refused with fmi2Error and a clear message, leaving the instance as it was. What every model shares
-runs for each model (the `model` fixture); the byte layout and its messages are checked on
-AngularKinematics."""
+runs for each model (the `model` fixture), what both FMI layers share for both (`layer`: FMI 2 and
+FMI 3; test_fmi3_fmu_state.py has what is FMI 3's own); the byte layout and its messages are
+checked on AngularKinematics."""
 import ctypes
 import struct
 import xml.etree.ElementTree as ET
@@ -14,6 +15,7 @@ from fmpy.fmi2 import fmi2FMUstate
 
 import reference
 from conftest import description_path_of, fmu_state_size, value_references_of
+from fmi_layers import observable, set_derivatives
 
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
 OTHER = dict(zip(reference.INPUT_NAMES, [-1.0, 1.5, 0.2, 4.0, 0.1, -0.3, 0.0, 9.0, -2.0]))
@@ -26,21 +28,6 @@ DERIVATIVES = 88 + 8 * N_VALUES  # where the input derivatives begin
 CRC = SIZE - 4
 SEQUENCE = value_references_of("AngularKinematics")["sequence"]
 GUID = ET.parse(description_path_of("AngularKinematics")).getroot().get("guid").encode()
-
-
-def set_derivatives(instance, derivatives):
-    """fmi2SetRealInputDerivatives of order 1 for the named inputs."""
-    names = list(derivatives)
-    vr = (ctypes.c_uint * len(names))(*[instance.vr[n] for n in names])
-    order = (ctypes.c_int * len(names))(*([1] * len(names)))
-    value = (ctypes.c_double * len(names))(*derivatives.values())
-    return instance.call("fmi2SetRealInputDerivatives", vr, len(names), order, value)
-
-
-def observable(instance):
-    """The names of every Real input and output of the instance's model."""
-    return [v.name for v in instance.model_description.modelVariables
-            if v.type == "Real" and v.causality in ("input", "output")]
 
 
 def snapshot(instance):
@@ -92,20 +79,51 @@ def test_rollback_restores_time_values_and_input_derivatives(model, make_model_i
     assert state.value is None
 
 
-def test_round_trip_across_two_instances(model, make_model_instance):
-    first = running(make_model_instance, "first", model)
-    data = first.fmu.serializeFMUstate(first.fmu.getFMUstate())
-    # The header, 8 bytes per variable and 16 (two input derivatives) per input, the CRC.
-    assert len(data) == 92 + 8 * len(model.c_table["variables"]) + 16 * len(model.inputs)
-    second = make_model_instance("second")  # just instantiated, never initialized
-    state = second.fmu.deSerializeFMUstate(data)
-    second.fmu.setFMUstate(state)
-    assert snapshot(second) == snapshot(first)
-    assert np.array_equal(stepping(second, 0.2, 6), stepping(first, 0.2, 6))
-    # The second instance serializes to the same bytes as the first at the same point.
-    assert second.fmu.serializeFMUstate(second.fmu.getFMUstate()) == \
-        first.fmu.serializeFMUstate(first.fmu.getFMUstate())
+def test_state_restores_everything_bit_for_bit_also_in_another_instance(layer, model, new_instance,
+                                                                         report):
+    first = layer.started(new_instance, model, "first")
+    second = new_instance(model.name, name="second", fmi_version=layer.version)  # never initialized
+    state = layer.get_state(first)
+    saved = layer.values(first)
+    data = layer.serialized(first, state)
+    assert len(data) == layer.expected_size(model)
+    assert data[:8] == layer.magic
+    # Move on (other inputs, a step), then back: the values and the time.
+    assert layer.set_inputs(first, list(OTHER.values())[:len(model.inputs)]) == 0
+    assert layer.step(first, 0.25, 0.5) == (0, 0.75)
+    assert layer.values(first) != saved
+    assert first.call(layer.set, state) == 0
+    assert layer.values(first) == saved
+    # Into the fresh instance through the bytes.
+    status, copy = layer.deserialized(second, data)
+    assert status == 0
+    assert second.call(layer.set, copy) == 0
+    assert layer.values(second) == saved
+    # Both go on alike, from the restored time (0.25), and serialize to the same bytes.
+    t = 0.25
+    for _ in range(6):
+        assert layer.step(first, t, 0.05) == layer.step(second, t, 0.05) == (0, t + 0.05)
+        assert layer.values(second) == layer.values(first)
+        t += 0.05
+    assert layer.serialized(second, layer.get_state(second)) == \
+        layer.serialized(first, layer.get_state(first))
+    # A state object passed back is reused; freed, it is NULL.
+    assert layer.get_state(first, state) is state
+    assert first.call(layer.free, ctypes.byref(state)) == 0 and not state.value
+    assert second.call(layer.free, ctypes.byref(copy)) == 0 and not copy.value
     assert first.errors() == [] and second.errors() == []
+    report(f"{model.name} ({layer}): serialized state {len(data)} bytes; restored bit for bit")
+
+
+def test_states_not_freed_are_freed_with_the_instance(layer, model, new_instance):
+    """Runs under valgrind/ASan in the abuse runs: no leak when the importer forgets states."""
+    instance = layer.started(new_instance, model, "forgetful")
+    states = [layer.get_state(instance) for _ in range(5)]
+    assert len({state.value for state in states}) == 5 and None not in {s.value for s in states}
+    instance.free()
+    # The instance's memory, its states' with it, is gone; a new instance of the model works.
+    again = layer.started(new_instance, model, "again")
+    assert len(layer.serialized(again, layer.get_state(again))) == layer.expected_size(model)
 
 
 def test_layout_is_the_documented_one(make_instance):

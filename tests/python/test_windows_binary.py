@@ -14,7 +14,7 @@ import pytest
 
 # One wine prefix (build-win64/wineprefix) for both wine test files: with pytest-xdist they run
 # in one worker (--dist loadgroup), so that two wine processes never create the prefix at once.
-pytestmark = pytest.mark.xdist_group("wine")
+pytestmark = [pytest.mark.xdist_group("wine"), pytest.mark.external]
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 WIN64_BUILD = ROOT / "build-win64"
