@@ -91,9 +91,13 @@ static inline bool ak_given(const ak_instance *instance, const char *function, s
     return n == 0 || pointer != NULL ||
            ak_refuse_null(instance, function, n, count_name, pointer_name);
 }
-/* A pointer argument that must not be NULL: logs "<function>: <name> is NULL" when it is. */
-bool ak_not_null(const ak_instance *instance, const char *function, const void *pointer,
-                 const char *name);
+/* Logs "<function>: <name> is NULL"; false. */
+bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name);
+/* A pointer argument that must not be NULL (inline: fmi3DoStep asks it four times a step). */
+static inline bool ak_not_null(const ak_instance *instance, const char *function,
+                               const void *pointer, const char *name) {
+    return pointer != NULL || ak_refuse_null_pointer(instance, function, name);
+}
 /* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
  * its arrays first (FMI 2; the FMI 3 layer expands
  * its arrays into them where it has no faster path). */

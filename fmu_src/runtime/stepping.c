@@ -111,27 +111,36 @@ static bool step_arguments_valid(const ak_instance *instance, const char *functi
  * point, and the importer may go back with an FMU state or reset, or terminate. */
 static ak_status step_evaluating(ak_instance *instance, const char *function, double t,
                                  double h) {
+    /* What a refused step must put back: the values and input derivatives, when the states or
+     * the inputs move (a failed evaluation alone writes nothing). */
+    const bool moves = AK_MODEL.step != NULL || instance->data.any_input_derivative;
     double saved_values[AK_MAX_VARIABLES];
     double saved_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
     const size_t n_values = sizeof(double) * (size_t)AK_MODEL.n_value_references;
-    memcpy(saved_values, instance->data.values, n_values);
-    memcpy(saved_derivatives, instance->data.input_derivatives, sizeof saved_derivatives);
     const bool saved_any = instance->data.any_input_derivative;
+    if (moves) {
+        memcpy(saved_values, instance->data.values, n_values);
+        memcpy(saved_derivatives, instance->data.input_derivatives, sizeof saved_derivatives);
+    }
     ak_eval_status stepped = AK_EVAL_OK;
     if (AK_MODEL.step != NULL) {
         stepped = AK_MODEL.step(&instance->data, h); /* failing, it changed nothing */
         ak_instance_inputs_changed(instance);
     }
     if (stepped != AK_EVAL_FAILED && !advance_inputs(instance, function, h)) {
-        memcpy(instance->data.values, saved_values, n_values); /* the states moved */
+        if (moves) {
+            memcpy(instance->data.values, saved_values, n_values); /* the states moved */
+        }
         return AK_STATUS_ERROR;
     }
     const ak_status status =
         stepped != AK_EVAL_FAILED ? ak_instance_update(instance, AK_GROUP_MAIN) : AK_STATUS_DISCARD;
     if (status == AK_STATUS_DISCARD) {
-        memcpy(instance->data.values, saved_values, n_values);
-        memcpy(instance->data.input_derivatives, saved_derivatives, sizeof saved_derivatives);
-        instance->data.any_input_derivative = saved_any;
+        if (moves) {
+            memcpy(instance->data.values, saved_values, n_values);
+            memcpy(instance->data.input_derivatives, saved_derivatives, sizeof saved_derivatives);
+            instance->data.any_input_derivative = saved_any;
+        }
         /* The outputs are those of the last successful evaluation; a read evaluates again at the
          * restored inputs (and fails again if they are the singular ones). */
         ak_instance_inputs_changed(instance);

@@ -17,13 +17,9 @@ bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
     return false;
 }
 
-bool ak_not_null(const ak_instance *instance, const char *function, const void *pointer,
-                 const char *name) {
-    if (pointer == NULL) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, name);
-        return false;
-    }
-    return true;
+bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name) {
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, name);
+    return false;
 }
 
 /* Every value reference a value array can hold, in order: vr[] is a run first, first + 1, ..

@@ -223,14 +223,17 @@ fmi2ValueReference ak_test_vr(const char *name) {
 }
 
 bool ak_test_has_kinematics_123_layout(void) {
+    /* Read from the variable table by value reference, without formatting a name: the
+     * consistency check of every step asks it. */
     static const char *const arrays[] = {"theta",       "theta_dot",   "theta_ddot", "omega_fixed",
                                          "omega_body",  "alpha_fixed", "alpha_body"};
     for (int a = 0; a < 7; a++) {
+        const size_t length = strlen(arrays[a]);
         for (int k = 0; k < 3; k++) {
-            char name[32];
-            snprintf(name, sizeof name, "%s[%d]", arrays[a], k + 1);
-            fmi2ValueReference vr = 0;
-            if (!ak_test_find_vr(name, &vr) || vr != (fmi2ValueReference)(3 * a + k)) {
+            const ak_variable *variable = ak_variable_of((unsigned int)(3 * a + k));
+            const char *name = variable != NULL ? variable->name : "";
+            if (strncmp(name, arrays[a], length) != 0 || name[length] != '[' ||
+                name[length + 1] != (char)('1' + k) || strcmp(&name[length + 2], "]") != 0) {
                 return false;
             }
         }
