@@ -92,58 +92,33 @@ void fmi2FreeInstance(fmi2Component c) {
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
                                const fmi2String categories[]) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_SET_DEBUG_LOGGING)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_set_debug_logging(instance, fmi2_name(AK_FMI2_SET_DEBUG_LOGGING),
+    return fmi2_status(ak_set_debug_logging(c, &FMI2_RULES[AK_FMI2_SET_DEBUG_LOGGING],
                                             loggingOn != fmi2False, nCategories, categories));
 }
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined,
                                fmi2Real tolerance, fmi2Real startTime,
                                fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_SETUP_EXPERIMENT)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_setup_experiment(instance, fmi2_name(AK_FMI2_SETUP_EXPERIMENT),
+    return fmi2_status(ak_setup_experiment(c, &FMI2_RULES[AK_FMI2_SETUP_EXPERIMENT],
                                            toleranceDefined != fmi2False, tolerance, startTime,
-                                           stopTimeDefined != fmi2False, stopTime));
+                                           stopTimeDefined != fmi2False, stopTime,
+                                           AK_INSTANTIATED));
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_ENTER_INITIALIZATION_MODE)) {
-        return fmi2Error;
-    }
-    instance->state = AK_INITIALIZATION_MODE;
-    return fmi2OK;
+    return fmi2_status(ak_enter_state(c, &FMI2_RULES[AK_FMI2_ENTER_INITIALIZATION_MODE],
+                                      AK_INITIALIZATION_MODE));
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_EXIT_INITIALIZATION_MODE)) {
-        return fmi2Error;
-    }
     return fmi2_status(
-        ak_exit_initialization_mode(instance, fmi2_name(AK_FMI2_EXIT_INITIALIZATION_MODE)));
+        ak_exit_initialization_mode(c, &FMI2_RULES[AK_FMI2_EXIT_INITIALIZATION_MODE]));
 }
 
 fmi2Status fmi2Terminate(fmi2Component c) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_TERMINATE)) {
-        return fmi2Error;
-    }
-    instance->state = AK_TERMINATED;
-    return fmi2OK;
+    return fmi2_status(ak_enter_state(c, &FMI2_RULES[AK_FMI2_TERMINATE], AK_TERMINATED));
 }
 
 fmi2Status fmi2Reset(fmi2Component c) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_RESET)) {
-        return fmi2Error;
-    }
-    ak_instance_reset(instance);
-    return fmi2OK;
+    return fmi2_status(ak_reset(c, &FMI2_RULES[AK_FMI2_RESET]));
 }

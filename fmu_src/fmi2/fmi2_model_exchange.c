@@ -4,12 +4,7 @@
 #include "fmi2_layer.h"
 
 fmi2Status fmi2EnterEventMode(fmi2Component c) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_ENTER_EVENT_MODE)) {
-        return fmi2Error;
-    }
-    instance->state = AK_EVENT_MODE;
-    return fmi2OK;
+    return fmi2_status(ak_enter_state(c, &FMI2_RULES[AK_FMI2_ENTER_EVENT_MODE], AK_EVENT_MODE));
 }
 
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo) {
@@ -29,12 +24,8 @@ fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo) {
 }
 
 fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_ENTER_CONTINUOUS_TIME_MODE)) {
-        return fmi2Error;
-    }
-    instance->state = AK_CONTINUOUS_TIME_MODE;
-    return fmi2OK;
+    return fmi2_status(ak_enter_state(c, &FMI2_RULES[AK_FMI2_ENTER_CONTINUOUS_TIME_MODE],
+                                      AK_CONTINUOUS_TIME_MODE));
 }
 
 fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStatePriorToCurrentPoint,
@@ -54,56 +45,31 @@ fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStat
 }
 
 fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_SET_TIME)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_set_time(instance, fmi2_name(AK_FMI2_SET_TIME), time));
+    return fmi2_status(ak_set_time(c, &FMI2_RULES[AK_FMI2_SET_TIME], time));
 }
 
 fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t nx) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_SET_CONTINUOUS_STATES)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_set_continuous_states(
-        instance, fmi2_name(AK_FMI2_SET_CONTINUOUS_STATES), "nx", "x", x, nx));
+    return fmi2_status(
+        ak_set_continuous_states(c, &FMI2_RULES[AK_FMI2_SET_CONTINUOUS_STATES], "nx", "x", x, nx));
 }
 
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[], size_t nx) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_GET_DERIVATIVES)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_get_state_derivatives(instance, fmi2_name(AK_FMI2_GET_DERIVATIVES), "nx",
+    return fmi2_status(ak_get_state_derivatives(c, &FMI2_RULES[AK_FMI2_GET_DERIVATIVES], "nx",
                                                 "derivatives", derivatives, nx));
 }
 
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], size_t ni) {
     (void)eventIndicators;
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_GET_EVENT_INDICATORS)) {
-        return fmi2Error;
-    }
     return fmi2_status(
-        ak_no_event_indicators(instance, fmi2_name(AK_FMI2_GET_EVENT_INDICATORS), "ni", ni));
+        ak_no_event_indicators(c, &FMI2_RULES[AK_FMI2_GET_EVENT_INDICATORS], "ni", ni));
 }
 
 fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_GET_CONTINUOUS_STATES)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_get_continuous_states(
-        instance, fmi2_name(AK_FMI2_GET_CONTINUOUS_STATES), "nx", "x", x, nx));
+    return fmi2_status(
+        ak_get_continuous_states(c, &FMI2_RULES[AK_FMI2_GET_CONTINUOUS_STATES], "nx", "x", x, nx));
 }
 
 fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal[], size_t nx) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_GET_NOMINALS_OF_CONTINUOUS_STATES)) {
-        return fmi2Error;
-    }
-    return fmi2_status(ak_get_nominals(instance,
-                                       fmi2_name(AK_FMI2_GET_NOMINALS_OF_CONTINUOUS_STATES), "nx",
-                                       "x_nominal", x_nominal, nx));
+    return fmi2_status(ak_get_nominals(c, &FMI2_RULES[AK_FMI2_GET_NOMINALS_OF_CONTINUOUS_STATES],
+                                       "nx", "x_nominal", x_nominal, nx));
 }

@@ -116,70 +116,41 @@ void fmi3FreeInstance(fmi3Instance c) {
 
 fmi3Status fmi3SetDebugLogging(fmi3Instance c, fmi3Boolean loggingOn, size_t nCategories,
                                const fmi3String categories[]) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_SET_DEBUG_LOGGING)) {
-        return fmi3Error;
-    }
-    return fmi3_status(ak_set_debug_logging(instance, fmi3_name(AK3_SET_DEBUG_LOGGING),
+    return fmi3_status(ak_set_debug_logging(c, &FMI3_RULES[AK3_SET_DEBUG_LOGGING],
                                             loggingOn != fmi3False, nCategories, categories));
 }
 
 fmi3Status fmi3EnterInitializationMode(fmi3Instance c, fmi3Boolean toleranceDefined,
                                        fmi3Float64 tolerance, fmi3Float64 startTime,
                                        fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_ENTER_INITIALIZATION_MODE)) {
-        return fmi3Error;
-    }
-    const ak_status status = ak_setup_experiment(
-        instance, fmi3_name(AK3_ENTER_INITIALIZATION_MODE), toleranceDefined != fmi3False,
-        tolerance, startTime, stopTimeDefined != fmi3False, stopTime);
-    if (status == AK_STATUS_OK) {
-        instance->state = AK_INITIALIZATION_MODE;
-    }
-    return fmi3_status(status);
+    return fmi3_status(ak_setup_experiment(c, &FMI3_RULES[AK3_ENTER_INITIALIZATION_MODE],
+                                           toleranceDefined != fmi3False, tolerance, startTime,
+                                           stopTimeDefined != fmi3False, stopTime,
+                                           AK_INITIALIZATION_MODE));
 }
 
 fmi3Status fmi3ExitInitializationMode(fmi3Instance c) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_EXIT_INITIALIZATION_MODE)) {
-        return fmi3Error;
-    }
-    return fmi3_status(ak_exit_initialization_mode(instance, fmi3_name(AK3_EXIT_INITIALIZATION_MODE)));
-}
-
-/* A move of the state machine, nothing else. */
-static fmi3Status enter(fmi3Instance c, ak3_function function, ak_state state) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, function)) {
-        return fmi3Error;
-    }
-    instance->state = state;
-    return fmi3OK;
+    return fmi3_status(ak_exit_initialization_mode(c, &FMI3_RULES[AK3_EXIT_INITIALIZATION_MODE]));
 }
 
 fmi3Status fmi3EnterEventMode(fmi3Instance c) {
-    return enter(c, AK3_ENTER_EVENT_MODE, AK_EVENT_MODE);
+    return fmi3_status(ak_enter_state(c, &FMI3_RULES[AK3_ENTER_EVENT_MODE], AK_EVENT_MODE));
 }
 
 fmi3Status fmi3Terminate(fmi3Instance c) {
-    return enter(c, AK3_TERMINATE, AK_TERMINATED);
+    return fmi3_status(ak_enter_state(c, &FMI3_RULES[AK3_TERMINATE], AK_TERMINATED));
 }
 
 fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance c) {
-    return enter(c, AK3_ENTER_CONTINUOUS_TIME_MODE, AK_CONTINUOUS_TIME_MODE);
+    return fmi3_status(ak_enter_state(c, &FMI3_RULES[AK3_ENTER_CONTINUOUS_TIME_MODE],
+                                      AK_CONTINUOUS_TIME_MODE));
 }
 
 fmi3Status fmi3EnterStepMode(fmi3Instance c) {
     /* Only from Event Mode, which co-simulation instances never enter: the table refuses it. */
-    return enter(c, AK3_ENTER_STEP_MODE, AK_STEP_MODE);
+    return fmi3_status(ak_enter_state(c, &FMI3_RULES[AK3_ENTER_STEP_MODE], AK_STEP_MODE));
 }
 
 fmi3Status fmi3Reset(fmi3Instance c) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_RESET)) {
-        return fmi3Error;
-    }
-    ak_instance_reset(instance);
-    return fmi3OK;
+    return fmi3_status(ak_reset(c, &FMI3_RULES[AK3_RESET]));
 }

@@ -48,53 +48,33 @@ fmi3Status fmi3CompletedIntegratorStep(fmi3Instance c, fmi3Boolean noSetFMUState
 }
 
 fmi3Status fmi3SetTime(fmi3Instance c, fmi3Float64 time) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_SET_TIME)) {
-        return fmi3Error;
-    }
-    return fmi3_status(ak_set_time(instance, fmi3_name(AK3_SET_TIME), time));
+    return fmi3_status(ak_set_time(c, &FMI3_RULES[AK3_SET_TIME], time));
 }
 
 fmi3Status fmi3SetContinuousStates(fmi3Instance c, const fmi3Float64 continuousStates[],
                                    size_t nContinuousStates) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_SET_CONTINUOUS_STATES)) {
-        return fmi3Error;
-    }
-    return fmi3_status(ak_set_continuous_states(instance, fmi3_name(AK3_SET_CONTINUOUS_STATES),
+    return fmi3_status(ak_set_continuous_states(c, &FMI3_RULES[AK3_SET_CONTINUOUS_STATES],
                                                 "nContinuousStates", "continuousStates",
                                                 continuousStates, nContinuousStates));
 }
 
 fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance c, fmi3Float64 derivatives[],
                                              size_t nContinuousStates) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_GET_CONTINUOUS_STATE_DERIVATIVES)) {
-        return fmi3Error;
-    }
-    return fmi3_status(ak_get_state_derivatives(
-        instance, fmi3_name(AK3_GET_CONTINUOUS_STATE_DERIVATIVES), "nContinuousStates",
-        "derivatives", derivatives, nContinuousStates));
+    const ak_function_rule *call = &FMI3_RULES[AK3_GET_CONTINUOUS_STATE_DERIVATIVES];
+    return fmi3_status(ak_get_state_derivatives(c, call, "nContinuousStates", "derivatives",
+                                                derivatives, nContinuousStates));
 }
 
 fmi3Status fmi3GetContinuousStates(fmi3Instance c, fmi3Float64 continuousStates[],
                                    size_t nContinuousStates) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_GET_CONTINUOUS_STATES)) {
-        return fmi3Error;
-    }
-    return fmi3_status(ak_get_continuous_states(instance, fmi3_name(AK3_GET_CONTINUOUS_STATES),
+    return fmi3_status(ak_get_continuous_states(c, &FMI3_RULES[AK3_GET_CONTINUOUS_STATES],
                                                 "nContinuousStates", "continuousStates",
                                                 continuousStates, nContinuousStates));
 }
 
 fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance c, fmi3Float64 nominals[],
                                              size_t nContinuousStates) {
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_GET_NOMINALS_OF_CONTINUOUS_STATES)) {
-        return fmi3Error;
-    }
-    return fmi3_status(ak_get_nominals(instance, fmi3_name(AK3_GET_NOMINALS_OF_CONTINUOUS_STATES),
+    return fmi3_status(ak_get_nominals(c, &FMI3_RULES[AK3_GET_NOMINALS_OF_CONTINUOUS_STATES],
                                        "nContinuousStates", "nominals", nominals,
                                        nContinuousStates));
 }
@@ -102,11 +82,7 @@ fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance c, fmi3Float64 nominal
 fmi3Status fmi3GetEventIndicators(fmi3Instance c, fmi3Float64 eventIndicators[],
                                   size_t nEventIndicators) {
     (void)eventIndicators;
-    ak_instance *instance = c;
-    if (!fmi3_allowed(instance, AK3_GET_EVENT_INDICATORS)) {
-        return fmi3Error;
-    }
-    return fmi3_status(ak_no_event_indicators(instance, fmi3_name(AK3_GET_EVENT_INDICATORS),
+    return fmi3_status(ak_no_event_indicators(c, &FMI3_RULES[AK3_GET_EVENT_INDICATORS],
                                               "nEventIndicators", nEventIndicators));
 }
 

@@ -32,8 +32,12 @@ static bool state_array(const ak_instance *instance, const char *function, const
     return ak_given(instance, function, nx, count_name, array, array_name);
 }
 
-ak_status ak_no_event_indicators(ak_instance *instance, const char *function,
+ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *call,
                                  const char *count_name, size_t n) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (n != 0) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: %s = %zu, but this FMU has %s (%s must be 0)", function, count_name, n,
@@ -45,7 +49,11 @@ ak_status ak_no_event_indicators(ak_instance *instance, const char *function,
     return AK_STATUS_OK;
 }
 
-ak_status ak_set_time(ak_instance *instance, const char *function, double time) {
+ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, double time) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (!isfinite(time)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: time = %g is not finite", function,
                time);
@@ -58,9 +66,13 @@ ak_status ak_set_time(ak_instance *instance, const char *function, double time) 
     return AK_STATUS_OK;
 }
 
-ak_status ak_set_continuous_states(ak_instance *instance, const char *function,
+ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name,
                                    const double x[], size_t nx) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (!state_array(instance, function, count_name, array_name, x, nx)) {
         return AK_STATUS_ERROR;
     }
@@ -82,9 +94,13 @@ ak_status ak_set_continuous_states(ak_instance *instance, const char *function,
     return AK_STATUS_OK;
 }
 
-ak_status ak_get_state_derivatives(ak_instance *instance, const char *function,
+ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name,
                                    double derivatives[], size_t nx) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (!state_array(instance, function, count_name, array_name, derivatives, nx)) {
         return AK_STATUS_ERROR;
     }
@@ -100,9 +116,13 @@ ak_status ak_get_state_derivatives(ak_instance *instance, const char *function,
     return AK_STATUS_OK;
 }
 
-ak_status ak_get_continuous_states(ak_instance *instance, const char *function,
+ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name, double x[],
                                    size_t nx) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (!state_array(instance, function, count_name, array_name, x, nx)) {
         return AK_STATUS_ERROR;
     }
@@ -115,8 +135,13 @@ ak_status ak_get_continuous_states(ak_instance *instance, const char *function,
     return AK_STATUS_OK;
 }
 
-ak_status ak_get_nominals(ak_instance *instance, const char *function, const char *count_name,
-                          const char *array_name, double nominals[], size_t nx) {
+ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
+                          const char *count_name, const char *array_name, double nominals[],
+                          size_t nx) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (!state_array(instance, function, count_name, array_name, nominals, nx)) {
         return AK_STATUS_ERROR;
     }

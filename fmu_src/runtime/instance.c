@@ -151,9 +151,6 @@ bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char 
     return true;
 }
 
-/* Frees the FMU states the importer did not free (fmu_states.c). */
-void ak_free_all_fmu_states(ak_instance *instance);
-
 void ak_instance_release(ak_instance *instance) {
     ak_free_all_fmu_states(instance);
     instance->layer->release(instance, instance->instance_name);

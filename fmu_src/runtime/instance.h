@@ -181,6 +181,9 @@ bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char 
  * not free); the layer then frees its own instance. */
 void ak_instance_release(ak_instance *instance);
 
+/* Frees the FMU states the importer did not free (fmu_states.c). */
+void ak_free_all_fmu_states(ak_instance *instance);
+
 /* Puts the instance in its just-instantiated condition (instantiation and reset). */
 void ak_instance_reset(ak_instance *instance);
 

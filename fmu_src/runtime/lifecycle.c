@@ -15,8 +15,28 @@ static bool find_category(const char *name, ak_log_category *category) {
     return false;
 }
 
-ak_status ak_set_debug_logging(ak_instance *instance, const char *function, bool on, size_t n,
-                               const char *const categories[]) {
+ak_status ak_enter_state(ak_instance *instance, const ak_function_rule *call, ak_state state) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    instance->state = state;
+    return AK_STATUS_OK;
+}
+
+ak_status ak_reset(ak_instance *instance, const ak_function_rule *call) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    ak_instance_reset(instance);
+    return AK_STATUS_OK;
+}
+
+ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *call, bool on,
+                               size_t n, const char *const categories[]) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (!ak_given(instance, function, n, "nCategories", categories, "categories")) {
         return AK_STATUS_ERROR;
     }
@@ -41,9 +61,13 @@ ak_status ak_set_debug_logging(ak_instance *instance, const char *function, bool
     return AK_STATUS_OK;
 }
 
-ak_status ak_setup_experiment(ak_instance *instance, const char *function, bool tolerance_defined,
-                              double tolerance, double start_time, bool stop_time_defined,
-                              double stop_time) {
+ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *call,
+                              bool tolerance_defined, double tolerance, double start_time,
+                              bool stop_time_defined, double stop_time, ak_state then) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (tolerance_defined && !(isfinite(tolerance) && tolerance >= 0.0)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: tolerance = %g must be finite and >= 0", function, tolerance);
@@ -65,10 +89,15 @@ ak_status ak_setup_experiment(ak_instance *instance, const char *function, bool 
     instance->time = start_time;
     instance->stop_time_defined = stop_time_defined;
     instance->stop_time = stop_time;
+    instance->state = then;
     return AK_STATUS_OK;
 }
 
-ak_status ak_exit_initialization_mode(ak_instance *instance, const char *function) {
+ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_rule *call) {
+    if (!ak_call_allowed(instance, call)) {
+        return AK_STATUS_ERROR;
+    }
+    const char *const function = call->name;
     if (AK_MODEL.initialize != NULL) {
         if (AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
             ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,

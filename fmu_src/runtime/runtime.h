@@ -1,8 +1,9 @@
-/* What the runtime does for an FMI layer, FMI-independent: each function takes the calling FMI
- * function's name for its messages, does what the standards share and returns an ak_status,
- * which the layer maps to its status type. The state checks are the layer's (ak_call_allowed
- * with its table) and come first. Every function checks all of its arguments before it changes
- * anything: a refused call changes nothing. */
+/* What the runtime does for an FMI layer, FMI-independent: each function does what the standards
+ * share and returns an ak_status, which the layer maps to its status type. A function given the
+ * calling FMI function's table entry (`call`) checks the call first (ak_call_allowed) and names the
+ * function in its messages; one given only its name (`function`) is called by the layer after the
+ * layer's own checks. Every function checks all of its arguments before it changes anything: a
+ * refused call changes nothing. */
 #ifndef ANGULAR_KINEMATICS_RUNTIME_H
 #define ANGULAR_KINEMATICS_RUNTIME_H
 
@@ -13,23 +14,28 @@
 
 /* --- life cycle (lifecycle.c) ------------------------------------------------------------------ */
 
+/* A move of the state machine and nothing else (fmi2EnterInitializationMode, fmiXTerminate,
+ * fmiXEnterEventMode, ...). */
+ak_status ak_enter_state(ak_instance *instance, const ak_function_rule *call, ak_state state);
+/* The instance as instantiated (fmiXReset). */
+ak_status ak_reset(ak_instance *instance, const ak_function_rule *call);
 /* fmiXSetDebugLogging: switches the n named categories (all when n is 0) after checking every
  * name, so that a bad call changes nothing. */
-ak_status ak_set_debug_logging(ak_instance *instance, const char *function, bool on, size_t n,
-                               const char *const categories[]);
+ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *call, bool on,
+                               size_t n, const char *const categories[]);
 /* The experiment: tolerance (if defined) finite and >= 0, start time finite, stop time (if
- * defined) finite and not before the start. */
-ak_status ak_setup_experiment(ak_instance *instance, const char *function, bool tolerance_defined,
-                              double tolerance, double start_time, bool stop_time_defined,
-                              double stop_time);
+ * defined) finite and not before the start; then the instance is in state `then`
+ * (fmi2SetupExperiment: Instantiated; fmi3EnterInitializationMode: Initialization Mode). */
+ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *call,
+                              bool tolerance_defined, double tolerance, double start_time,
+                              bool stop_time_defined, double stop_time, ak_state then);
 /* The states from the parameters, then the outputs at the initial inputs; Event Mode (model
  * exchange) or Step Mode (co-simulation). A refusal of the parameters leaves the instance in
  * Initialization Mode, so that the importer can correct them and call again. */
-ak_status ak_exit_initialization_mode(ak_instance *instance, const char *function);
+ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_rule *call);
 
 /* --- FMU states (fmu_states.c) ----------------------------------------------------------------- */
 
-/* Each checks the call against the layer's table entry first (ak_call_allowed). */
 /* *state: a state of this instance to overwrite, or NULL for a new one. */
 ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
 ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state);
@@ -62,21 +68,22 @@ void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
 
 /* --- model exchange (continuous.c) ------------------------------------------------------------- */
 
-ak_status ak_set_time(ak_instance *instance, const char *function, double time);
+ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, double time);
 /* Arrays of the continuous states: count_name/array_name are the layer's argument names. */
-ak_status ak_set_continuous_states(ak_instance *instance, const char *function,
+ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name,
                                    const double x[], size_t nx);
-ak_status ak_get_continuous_states(ak_instance *instance, const char *function,
+ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name, double x[],
                                    size_t nx);
-ak_status ak_get_state_derivatives(ak_instance *instance, const char *function,
+ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name,
                                    double derivatives[], size_t nx);
-ak_status ak_get_nominals(ak_instance *instance, const char *function, const char *count_name,
-                          const char *array_name, double nominals[], size_t nx);
+ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
+                          const char *count_name, const char *array_name, double nominals[],
+                          size_t nx);
 /* The models have no event indicators: n must be 0. */
-ak_status ak_no_event_indicators(ak_instance *instance, const char *function,
+ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *call,
                                  const char *count_name, size_t n);
 
 /* --- values (values.c) ------------------------------------------------------------------------- */
