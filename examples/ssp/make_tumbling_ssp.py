@@ -13,12 +13,9 @@ carries OMSimulator's vendor annotation (org.openmodelica, oms:SimulationInforma
 OMSimulator wants on a root system and SSP allows (ssc:Annotation); the other tools skip it.
 
     .venv/bin/python examples/ssp/make_tumbling_ssp.py [--dist DIR] [--out FILE]"""
-import argparse
-import pathlib
 import sys
 
-from make_ssp import NS, ROOT, connectors_xml, scalars, write_entry
-import zipfile
+from make_ssp import NS, ROOT, command, connectors_xml, scalars, write_ssp
 
 STEP, STOP = 2.0 ** -6, 100 * 2.0 ** -6
 OMEGA = (0.4, -0.3, 0.5)  # rad/s, the propagator's input, held
@@ -89,21 +86,11 @@ def ssd_xml():
 
 
 def make_tumbling_ssp(dist, out):
-    out.parent.mkdir(parents=True, exist_ok=True)
-    with zipfile.ZipFile(out, "w") as archive:
-        write_entry(archive, "SystemStructure.ssd", ssd_xml().encode())
-        for model in sorted(model for model, _, _ in COMPONENTS.values()):
-            write_entry(archive, f"resources/{model}.fmu", (dist / f"{model}.fmu").read_bytes())
-    return out
+    return write_ssp(out, ssd_xml(), COMPONENTS, dist)
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--dist", default=str(ROOT / "dist"), help="folder of the built FMUs")
-    parser.add_argument("--out", default=str(ROOT / "dist" / "ssp" / "Tumbling.ssp"))
-    args = parser.parse_args(argv)
-    print(f"wrote {make_tumbling_ssp(pathlib.Path(args.dist), pathlib.Path(args.out))}")
-    return 0
+    return command(argv, __doc__, "Tumbling.ssp", ssd_xml(), COMPONENTS)
 
 
 if __name__ == "__main__":

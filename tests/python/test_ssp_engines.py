@@ -30,6 +30,8 @@ def test_the_system_is_component_only_schema_valid_and_self_contained():
     assert system.find("{*}Connectors") is None  # no connector of the system's own
     for connection in system.iter("{*}Connection"):
         assert connection.get("startElement") and connection.get("endElement")
+    stop = float(root.find("{*}DefaultExperiment").get("stopTime"))
+    assert stop == ssp_engines.STEPS * ssp_engines.STEP  # the scenario the engines run
     annotation = system.find("{*}Annotations/{*}Annotation")
     assert annotation.get("type") == "org.openmodelica"
     assert annotation.find(".//{*}SimulationInformation/{*}FixedStepMaster") is not None
