@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs the second FMI importer of the tests (tests/python/test_fmi4j.py): OpenJDK and Maven from
-# Debian's packages when missing, then builds examples/fmi4j/target/fmi4j-driver.jar with FMI4j
-# (info.laht.fmi4j:fmi-import, pinned in examples/fmi4j/pom.xml) from Maven Central into ~/.m2.
+# Installs the other FMI importers of the tests: for tests/python/test_fmi4j.py OpenJDK and Maven
+# from Debian's packages when missing, then builds examples/fmi4j/target/fmi4j-driver.jar with FMI4j
+# (info.laht.fmi4j:fmi-import, pinned in examples/fmi4j/pom.xml) from Maven Central into ~/.m2; for
+# tests/python/test_engines.py Debian's libtbb12, which Ecos's bundled libecosc.so needs (libcosim and
+# Ecos themselves are the pinned Python packages libcosimpy and ecospy of requirements.txt).
 # Idempotent and quiet: a second run installs nothing, downloads nothing and builds nothing.
 # docs/cosimulation.md gives what each part costs.
 set -euo pipefail
@@ -10,6 +12,7 @@ cd "$(dirname "$0")/.."
 missing=()
 command -v javac >/dev/null 2>&1 || missing+=(default-jdk-headless)
 command -v mvn >/dev/null 2>&1 || missing+=(maven)
+dpkg -s libtbb12 >/dev/null 2>&1 || missing+=(libtbb12)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup_importers: installing ${missing[*]} from Debian's packages"
   apt-get update -qq

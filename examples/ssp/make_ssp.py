@@ -91,27 +91,37 @@ def write_entry(archive, name, data):
     archive.writestr(info, data)
 
 
-def make_ssp(dist, out):
+def write_ssp(out, ssd, components, dist):
+    """The archive: the .ssd and the FMU of every model of components (element -> (model, ...))."""
     out.parent.mkdir(parents=True, exist_ok=True)
     with zipfile.ZipFile(out, "w") as archive:
-        write_entry(archive, "SystemStructure.ssd", ssd_xml().encode())
-        for model in sorted({model for model, _, _ in COMPONENTS.values()}):
+        write_entry(archive, "SystemStructure.ssd", ssd.encode())
+        for model in sorted({model for model, _, _ in components.values()}):
             write_entry(archive, f"resources/{model}.fmu", (dist / f"{model}.fmu").read_bytes())
     return out
 
 
-def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def make_ssp(dist, out):
+    return write_ssp(out, ssd_xml(), COMPONENTS, dist)
+
+
+def command(argv, doc, name, ssd, components):
+    """The command line of a make_*.py here: [--dist DIR] [--out FILE], default dist/ssp/<name>."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
     parser.add_argument("--dist", default=str(ROOT / "dist"), help="folder of the built FMUs")
-    parser.add_argument("--out", default=str(ROOT / "dist" / "ssp" / "RoundTrip.ssp"))
+    parser.add_argument("--out", default=str(ROOT / "dist" / "ssp" / name))
     args = parser.parse_args(argv)
     dist = pathlib.Path(args.dist)
-    missing = [m for m, _, _ in COMPONENTS.values() if not (dist / f"{m}.fmu").is_file()]
+    missing = [m for m, _, _ in components.values() if not (dist / f"{m}.fmu").is_file()]
     if missing:
         print(f"missing in {dist}: {', '.join(missing)} (build first: bash scripts/build.sh)")
         return 2
-    print(f"wrote {make_ssp(dist, pathlib.Path(args.out))}")
+    print(f"wrote {write_ssp(pathlib.Path(args.out), ssd, components, dist)}")
     return 0
+
+
+def main(argv=None):
+    return command(argv, __doc__, "RoundTrip.ssp", ssd_xml(), COMPONENTS)
 
 
 if __name__ == "__main__":
