@@ -48,7 +48,7 @@ function(ak_add_fmu3 model)
     target_link_options(${_target} PRIVATE -Wl,--no-undefined)
   endif()
   if(MINGW)
-    target_link_options(${_target} PRIVATE -static-libgcc -s)
+    target_link_options(${_target} PRIVATE ${AK_MINGW_FMU_LINK_OPTIONS})  # as the FMI 2 DLL's
   endif()
 
   if(NOT AK_PACKAGE_FMU)
@@ -93,13 +93,11 @@ function(ak_add_fmu3 model)
             "${_package}/binaries/${FMI3_PLATFORM}/"
     ${_copy_extra}
     COMMAND ${CMAKE_COMMAND} -E make_directory "${AK_DIST_DIR}/fmi3"
-    COMMAND ${CMAKE_COMMAND} -E remove -f "${_fmu}"
-    COMMAND ${CMAKE_COMMAND} -E chdir "${_package}" ${CMAKE_COMMAND} -E tar cf "${_fmu}" --format=zip
-            modelDescription.xml binaries documentation sources terminalsAndIcons
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py" "${_package}" "${_fmu}"
     WORKING_DIRECTORY "${CMAKE_BINARY_DIR}"
     DEPENDS ${_target} "${_folder}/modelDescription.xml" "${_folder}/buildDescription.xml"
             "${_folder}/documentation/index.html" ${_figures} "${CMAKE_SOURCE_DIR}/model.png" ${_packaged}
-            ${_extra}
+            ${_extra} "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py"
     COMMENT "Packaging ${_fmu}"
     VERBATIM)
   add_custom_target(fmu3_${model} ALL DEPENDS "${_fmu}")
@@ -108,6 +106,20 @@ endfunction()
 foreach(_model IN LISTS AK_MODELS)
   ak_add_fmu3(${_model})
 endforeach()
+
+# dist/README.md: what this build and scripts/release.sh write there, one line per model.
+if(AK_PACKAGE_FMU)
+  set(AK_DIST_FMI2_LINES "")
+  set(AK_DIST_FMI3_LINES "")
+  foreach(_model IN LISTS AK_MODELS)
+    string(APPEND AK_DIST_FMI2_LINES "- `${_model}.fmu`: FMI 2.0, Co-Simulation and Model Exchange, "
+                                     "binaries linux64 and win64, C sources\n")
+    string(APPEND AK_DIST_FMI3_LINES "- `fmi3/${_model}.fmu`: FMI 3.0, Co-Simulation and Model Exchange, "
+                                     "binaries x86_64-linux, x86_64-windows and aarch64-linux, C sources\n")
+  endforeach()
+  string(STRIP "${AK_DIST_FMI3_LINES}" AK_DIST_FMI3_LINES)
+  configure_file(cmake/dist_README.md.in "${AK_DIST_DIR}/README.md" @ONLY NEWLINE_STYLE UNIX)
+endif()
 # Every model's FMI 3 binary, for the builds that only make another platform's (scripts/build.sh).
 list(TRANSFORM AK_MODELS APPEND _fmi3 OUTPUT_VARIABLE _fmi3_targets)
 add_custom_target(fmi3_binaries DEPENDS ${_fmi3_targets})

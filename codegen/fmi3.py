@@ -110,17 +110,21 @@ def driver_models_c(models):
     return "\n".join(lines)
 
 
-def build_description(model, flat_sources):
+def build_description(model, flat_sources,
+                      note="How to build the FMI 3.0 FMU from sources/; the FMI 3.0 headers are the importer's."):
+    """sources/buildDescription.xml, also the FMI 2 FMU's (generate.build_description's note)."""
     files = "\n".join(f'      <SourceFile name="{name}"/>' for name in flat_sources)
     return f'''<?xml version="1.0" encoding="UTF-8"?>
 <!-- {HEADER_NOTE.format(source=f"models/{model.name}/description.py")}
-     How to build the FMI 3.0 FMU from sources/; the FMI 3.0 headers are the importer's. -->
+     {note} -->
 <fmiBuildDescription fmiVersion="3.0">
   <BuildConfiguration modelIdentifier="{model.name}"
-    description="Compile every source file as C11 into one shared library; on Unix-like systems link the C math library (-lm)">
+    description="Compile every source file as C11 into one shared library linked with the libraries below">
     <SourceFileSet language="C11">
 {files}
     </SourceFileSet>
+    <Library name="m" external="true"
+      description="The C math library (sin, cos, atan2, sqrt...): libm, -lm, on Unix-like systems; part of the C runtime on Windows"/>
   </BuildConfiguration>
 </fmiBuildDescription>
 '''

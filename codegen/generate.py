@@ -195,20 +195,10 @@ def flat_fmi3_sources(model):
 
 
 def build_description(model):
-    files = "\n".join(f'      <SourceFile name="{name}"/>' for name in flat_sources(model))
-    return f'''<?xml version="1.0" encoding="UTF-8"?>
-<!-- {HEADER_NOTE.format(source=f"models/{model.name}/description.py")}
-     How to build the FMU from sources/ (FMI 2.0.4 allows this FMI 3.0 file beside <SourceFiles>).
-     The FMI 2.0 headers are the importer's, as FMI 2.0 prescribes. -->
-<fmiBuildDescription fmiVersion="3.0">
-  <BuildConfiguration modelIdentifier="{model.name}"
-    description="Compile every source file as C11 into one shared library; on Unix-like systems link the C math library (-lm)">
-    <SourceFileSet language="C11">
-{files}
-    </SourceFileSet>
-  </BuildConfiguration>
-</fmiBuildDescription>
-'''
+    return fmi3.build_description(
+        model, flat_sources(model),
+        note="How to build the FMU from sources/ (FMI 2.0.4 allows this FMI 3.0 file beside <SourceFiles>).\n"
+             "     The FMI 2.0 headers are the importer's, as FMI 2.0 prescribes.")
 
 
 def _flag(value):

@@ -6,7 +6,8 @@
 #   3. every file of the two dist/ folders compared byte for byte (no timestamps or build paths);
 #   4. the version attribute of every modelDescription.xml, CMake's project version
 #      (build/CMakeCache.txt) and the "version X.Y.Z" of the FMU documentation equal to VERSION;
-#   5. the first clone's dist/ in place of dist/ here (but dist/README.md), with dist/SHA256SUMS.
+#   5. the first clone's dist/ in place of dist/ here (its README.md is the build's, like ours), with
+#      dist/SHA256SUMS of every file it ships, checked with sha256sum -c.
 # Uncommitted changes are not part of a release: commit first. Takes about two builds' time.
 #   bash scripts/release.sh
 set -euo pipefail
@@ -55,20 +56,22 @@ echo "release: $(wc -l <"$work/one.list") files of dist/ byte-identical in two b
 
 cmake_version=$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$work/one/AngularKinematics/build/CMakeCache.txt")
 [ "$cmake_version" = "$version" ] || fail "CMake's project version is $cmake_version, not $version"
-for fmu in "$one"/*.fmu; do
+for fmu in "$one"/*.fmu "$one"/fmi3/*.fmu; do
   found=$(unzip -p "$fmu" modelDescription.xml | grep -oE '^  version="[^"]*"' | cut -d'"' -f2)
-  [ "$found" = "$version" ] || fail "$(basename "$fmu"): modelDescription.xml version $found, not $version"
+  [ "$found" = "$version" ] || fail "${fmu#"$one"/}: modelDescription.xml version $found, not $version"
   for stated in $(unzip -p "$fmu" documentation/index.html | grep -oE 'version [0-9]+\.[0-9]+\.[0-9]+' |
     cut -d' ' -f2); do
-    [ "$stated" = "$version" ] || fail "$(basename "$fmu"): its documentation says version $stated"
+    [ "$stated" = "$version" ] || fail "${fmu#"$one"/}: its documentation says version $stated"
   done
 done
 echo "release: version $version in codegen, CMake, every modelDescription.xml and documentation"
 
 mkdir -p dist
-find dist -mindepth 1 -maxdepth 1 ! -name README.md -exec rm -rf {} +  # nothing stale in the release
+find dist -mindepth 1 -maxdepth 1 -exec rm -rf {} +  # nothing stale in the release
 cp -r "$one"/. dist/
 bash scripts/checksums.sh dist
+[ "$(wc -l <dist/SHA256SUMS)" = "$(wc -l <"$work/one.list")" ] || fail "dist/SHA256SUMS misses a file"
+(cd dist && sha256sum -c --quiet SHA256SUMS) || fail "dist/SHA256SUMS does not verify"
 echo "release: dist/ of $commit, dist/SHA256SUMS:"
 cat dist/SHA256SUMS
 rm -rf "$work"
