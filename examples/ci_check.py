@@ -142,8 +142,9 @@ def main(argv=None):
 
 
 def cross_check(folder):
-    """--cross-check DIR: examples/cross_check.py (copy it beside this file) re-simulates every
-    <Model>_in.csv under DIR and compares with <Model>_ref.csv; exit 0 equal, 1 different, 2 empty."""
+    """--cross-check DIR: examples/cross_check.py and cross_check3.py (copy them beside this file)
+    re-simulate every <Model>_in.csv under DIR, FMI 2.0 and 3.0, and compare with <Model>_ref.csv;
+    exit 0 equal, 1 different, 2 empty."""
     sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
     from cross_check import check_folder
     status = check_folder(pathlib.Path(folder))
