@@ -13,8 +13,8 @@ HOST = {"2.0": "linux64", "3.0": "x86_64-linux"}
 TEXT = """# {model} ({interface}, FMI {version}, {platform})
 
 The FMU `{model}.fmu` of AngularKinematics {tool_version}, made by `scripts/make_cross_check.py`.
-Tool ID `{tool}`: not yet in fmi-standard.org's tools list, where a new tool's ID comes from
-(docs/cosimulation.md of AngularKinematics).
+Tool ID `{tool}`: the ID this tool asks for; it is not yet in fmi-standard.org's tools list
+(AngularKinematics' docs/cosimulation.md says how a new tool gets listed).
 
 - `{model}_in.csv`: every input at every communication point, from {start} s to {stop} s in steps
   of {step} s (input k, counted from 0: 0.2 (k mod 3 + 1) + 0.6 sin((0.7 + 0.3 k) t + 0.5 k)).

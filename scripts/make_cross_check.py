@@ -52,31 +52,38 @@ def input_names(description):
     return names
 
 
-def make(fmu, out):
+def reference_run(fmu, interface):
+    """The reference experiment of the FMU in one interface: (description, write, table of the
+    inputs, table of the reference outputs), each table with its names, time first; write is
+    the CSV writer of the FMU's FMI version."""
     description = read_model_description(str(fmu))
-    model, version = description.modelName, description.fmiVersion
     times = np.round(np.arange(START, STOP + STEP / 2, STEP), 12)
     inputs_names = input_names(description)
     inputs = reference_inputs(inputs_names, times)
-    outputs_names = REFERENCE_OUTPUTS[model]
-    run, write = (simulate, write_csv) if version == "2.0" else (simulate3, write_csv3)
+    run, write = ((simulate, write_csv) if description.fmiVersion == "2.0"
+                  else (simulate3, write_csv3))
+    names, outputs = run(str(fmu), interface, times, inputs_names, inputs,
+                         REFERENCE_OUTPUTS[description.modelName])
+    return (description, write, (["time"] + inputs_names, np.column_stack([times, inputs])),
+            (["time"] + names, np.column_stack([times, outputs])))
+
+
+def make(fmu, out):
     written = []
-    for interface, present in (("cs", description.coSimulation),
-                               ("me", description.modelExchange)):
-        if present is None:
-            continue
-        names, outputs = run(str(fmu), interface, times, inputs_names, inputs, outputs_names)
+    for interface in ("cs", "me"):
+        description, write, inputs, outputs = reference_run(fmu, interface)
+        model, version = description.modelName, description.fmiVersion
         for platform in platforms(fmu):
             folder = out / "fmus" / version / interface / platform / TOOL_ID / VERSION / model
             folder.mkdir(parents=True, exist_ok=True)
             shutil.copyfile(fmu, folder / f"{model}.fmu")
-            write(folder / f"{model}_in.csv", ["time"] + inputs_names,
-                  np.column_stack([times, inputs]))
-            write(folder / f"{model}_ref.csv", ["time"] + names, np.column_stack([times, outputs]))
+            write(folder / f"{model}_in.csv", *inputs)
+            write(folder / f"{model}_ref.csv", *outputs)
             (folder / f"{model}_ref.opt").write_text(
                 f"StartTime, {START}\nStopTime, {STOP}\nStepSize, {STEP}\nRelTol, 0\n")
             (folder / "README.md").write_text(readme(
-                model, version, interface, platform, names, description.numberOfContinuousStates))
+                model, version, interface, platform, outputs[0][1:],
+                description.numberOfContinuousStates))
             written.append(folder)
     return written
 
