@@ -124,7 +124,7 @@ def read_options(path):
     return options
 
 
-def check_model(folder, interface, fmi_version="2.0"):
+def check_model(folder, interface, fmi_version="2.0", label=""):
     """Re-simulates one <Model>/ folder; prints one line per deviating output and one summary
     line; returns 0 ok, 1 deviation."""
     model = folder.name
@@ -151,7 +151,7 @@ def check_model(folder, interface, fmi_version="2.0"):
             print(f"DIFFERENT {interface} {model} {name}: {deviation[worst]:.3g} at "
                   f"t = {times[worst]:g} s ({ratio[worst]:.3g} of the tolerance)")
     largest = float(np.max(np.abs(outputs - reference[:, 1:])))
-    print(f"{'ok' if status == 0 else 'FAILED':>9} {fmi_version} {interface} {folder.parts[-4]} "
+    print(f"{'ok' if status == 0 else 'FAILED':>9} {fmi_version} {interface} {label} "
           f"{model}: {len(names)} outputs x {len(times)} rows, largest deviation {largest:.3g}")
     return status
 
@@ -167,5 +167,5 @@ def check_folder(root):
     status = 0
     for folder in folders:
         fmi_version, interface = folder.parts[-6], folder.parts[-5]
-        status = max(status, check_model(folder, interface, fmi_version))
+        status = max(status, check_model(folder, interface, fmi_version, folder.parts[-4]))
     return status
