@@ -9,8 +9,9 @@ scripts/make_cross_check.py writes such a folder into dist/cross-check/; example
 machine's binary of it) and compares the columns of <Model>_ref.csv (FMI 3.0: cross_check3.py;
 an array's cell holds its elements separated by spaces). The call sequence (also that of the FMI4j
 driver, examples/fmi4j/): set up, initialize, then at each row of <Model>_in.csv set the inputs
-(after fmi2SetTime in Model Exchange), read the outputs, and in Co-Simulation step to the next row's time (Model Exchange with
-continuous states: one explicit Euler step to it, so a second importer can repeat the arithmetic).
+(after fmi2SetTime in Model Exchange), read the outputs, and in Co-Simulation step to the next
+row's time (Model Exchange with continuous states: one explicit Euler step to it, so a second
+importer can repeat the arithmetic).
 
 Tolerance per value: |y - y_ref| <= ABSOLUTE + RELATIVE * |y_ref|, 1e-12 each; the FMUs compute
 in double precision to ~1e-16, and the reference inputs keep every angle at least 0.5 rad from a
