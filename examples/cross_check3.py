@@ -38,11 +38,13 @@ def instantiate(description, unzipdir, interface):
     return instance
 
 
-def euler_step(instance, states, h):
-    """One explicit Euler step of the continuous states, element by element in doubles."""
+def euler_step(instance, states, h, derivatives):
+    """One explicit Euler step of the continuous states, element by element in doubles (the FMI4j
+    driver does the same arithmetic); derivatives: the instance's getDerivatives (FMI 2) or
+    getContinuousStateDerivatives (FMI 3)."""
     x, dx = (ctypes.c_double * states)(), (ctypes.c_double * states)()
     instance.getContinuousStates(x, states)
-    instance.getContinuousStateDerivatives(dx, states)
+    derivatives(dx, states)
     for k in range(states):
         x[k] = x[k] + h * dx[k]
     instance.setContinuousStates(x, states)
@@ -79,7 +81,8 @@ def simulate3(fmu, interface, times, input_names, inputs, output_names):
                 if interface == "cs":
                     instance.doStep(currentCommunicationPoint=time, communicationStepSize=h)
                 elif states:
-                    euler_step(instance, states, h)
+                    euler_step(instance, states, h,
+                               instance.getContinuousStateDerivatives)
         instance.terminate()
         instance.freeInstance()
     finally:
