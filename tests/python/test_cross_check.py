@@ -25,7 +25,8 @@ from cross_check import read_csv, read_options  # noqa: E402
 from cross_check_readme import TOOL_ID  # noqa: E402
 
 MODELS = ["AngularKinematics", "AttitudePropagator", "EulerRates"]
-PLATFORMS = {"2.0": {"linux64", "win64"}, "3.0": {"x86_64-linux", "x86_64-windows", "aarch64-linux"}}
+PLATFORMS = {"2.0": {"linux64", "win64"},
+             "3.0": {"x86_64-linux", "x86_64-windows", "aarch64-linux"}}
 FMUS = {"2.0": ROOT / "dist", "3.0": ROOT / "dist" / "fmi3"}
 
 
@@ -77,8 +78,8 @@ def test_validator_fails_on_a_name_with_a_comma(folder, tmp_path):
 @pytest.mark.parametrize("version,interface,platform,model", cases())
 def test_layout(folder, version, interface, platform, model):
     here = model_folder(folder, version, interface, platform, model)
-    assert {p.name for p in here.iterdir()} == {f"{model}.fmu", f"{model}_in.csv",
-                                                 f"{model}_ref.csv", f"{model}_ref.opt", "README.md"}
+    assert {p.name for p in here.iterdir()} == {
+        f"{model}.fmu", f"{model}_in.csv", f"{model}_ref.csv", f"{model}_ref.opt", "README.md"}
     fmu = FMUS[version] / f"{model}.fmu"
     assert (here / f"{model}.fmu").read_bytes() == fmu.read_bytes()
     with zipfile.ZipFile(fmu) as archive:

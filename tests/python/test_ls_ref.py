@@ -71,7 +71,7 @@ def test_committed_files_are_what_the_fmus_compute(tmp_path, fmu_path, report):
             continue
         largest = max(largest, float(np.max(np.abs(new - old) / (1 + np.abs(old)))))
         stale += [] if np.allclose(new, old, rtol=1e-12, atol=1e-12) else [str(path)]
-    report(f"ls_ref/ against a fresh run: largest difference {largest:.2g} (relative to 1 + |value|)")
+    report(f"ls_ref/ against a fresh run: largest difference {largest:.2g} (to 1 + |value|)")
     assert not stale, f"run .venv/bin/python scripts/make_ls_ref.py: {stale} changed"
 
 
