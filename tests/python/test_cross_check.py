@@ -101,6 +101,23 @@ def test_layout(folder, version, interface, platform, model):
     assert f"`{TOOL_ID}`" in (here / "README.md").read_text()
 
 
+@pytest.mark.parametrize("version", sorted(PLATFORMS))
+def test_three_fmus_for_each_platform_and_variant(folder, version):
+    """The rules ask an exporting tool for at least three FMUs per platform and FMI variant: the
+    platforms are the FMUs' binaries/ folders, every model in each."""
+    for model in MODELS:
+        with zipfile.ZipFile(FMUS[version] / f"{model}.fmu") as archive:
+            carried = {n.split("/")[1] for n in archive.namelist()
+                       if n.startswith("binaries/") and n.count("/") >= 2}
+        assert carried == PLATFORMS[version]
+    for interface in ("cs", "me"):
+        here = folder / "fmus" / version / interface
+        assert {p.name for p in here.iterdir()} == PLATFORMS[version]
+        for platform in PLATFORMS[version]:
+            models = here / platform / TOOL_ID / VERSION
+            assert sorted(p.name for p in models.iterdir()) == MODELS
+
+
 def test_tool_folder_is_an_id():
     """The IDs of fmi-standard.org's tools list are letters, digits, '_', '-', '.'."""
     assert re.fullmatch(r"[A-Za-z][A-Za-z0-9_.-]*", TOOL_ID)
