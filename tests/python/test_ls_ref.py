@@ -138,3 +138,11 @@ def test_dist_fmus_carry_ls_ref(version, model):
         pytest.skip("CMake does not package ls_ref/ into the FMUs yet")
     folder = ROOT / "ls_ref" / version / model
     assert files == {p.name: p.read_bytes() for p in folder.iterdir()}
+
+
+def test_ci_check_help_names_the_option():
+    done = run(ROOT / "examples" / "ci_check.py", "--help")
+    text = " ".join(done.stdout.split())
+    assert done.returncode == 0
+    assert ("--ls-ref FMU instead: re-simulate the FMU against the reference result it carries "
+            "(FMI-LS-REF, extra/org.fmi-standard.fmi-ls-ref/)") in text
