@@ -113,6 +113,9 @@ def parser():
     result.add_argument("--cross-check", metavar="DIR",
                         help="instead: re-simulate a folder in the FMI Cross-Check layout "
                              "(dist/cross-check/) and fail on a difference beyond its tolerance")
+    result.add_argument("--ls-ref", metavar="FMU",
+                        help="instead: re-simulate the FMU against the reference result it "
+                             "carries (FMI-LS-REF, extra/org.fmi-standard.fmi-ls-ref/)")
     return result
 
 
@@ -120,6 +123,8 @@ def main(argv=None):
     args = parser().parse_args(argv)
     if args.cross_check:
         return cross_check(args.cross_check)
+    if args.ls_ref:
+        return carried_reference(args.ls_ref)
     if not pathlib.Path(args.fmu).is_file():
         print(f"no FMU at {args.fmu}: build it with bash scripts/build.sh, or name one with --fmu")
         print("ERROR: not comparable")
@@ -142,12 +147,24 @@ def main(argv=None):
 
 
 def cross_check(folder):
-    """--cross-check DIR: examples/cross_check.py (copy it beside this file) re-simulates every
-    <Model>_in.csv under DIR and compares with <Model>_ref.csv; exit 0 equal, 1 different, 2 empty."""
+    """--cross-check DIR: examples/cross_check.py and cross_check3.py (copy them beside this file)
+    re-simulate every <Model>_in.csv under DIR, FMI 2.0 and 3.0, and compare with <Model>_ref.csv;
+    exit 0 equal, 1 different, 2 empty."""
     sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
     from cross_check import check_folder
     status = check_folder(pathlib.Path(folder))
     print({0: "PASSED: the cross-check results agree", 1: "FAILED: a result differs",
+           2: "ERROR: nothing to compare"}[status])
+    return status
+
+
+def carried_reference(fmu):
+    """--ls-ref FMU: examples/ls_ref.py (copy it and cross_check*.py beside this file) re-simulates
+    the FMU over the inputs it carries; exit 0 equal, 1 different, 2 nothing carried."""
+    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+    from ls_ref import check_carried
+    status = check_carried(pathlib.Path(fmu))
+    print({0: "PASSED: the FMU computes the result it carries", 1: "FAILED: a result differs",
            2: "ERROR: nothing to compare"}[status])
     return status
 

@@ -1,21 +1,22 @@
 """Results in the layout of the FMI Cross-Check (github.com/modelica/fmi-cross-check), and the
 check that re-simulates them.
 
-    fmus/2.0/<cs|me>/linux64/AngularKinematics/<version>/<Model>/
-        <Model>.fmu  <Model>_in.csv  <Model>_ref.csv  <Model>_ref.opt  ReadMe.md
+    fmus/<2.0|3.0>/<cs|me>/<platform>/<Tool_ID>/<version>/<Model>/
+        <Model>.fmu  <Model>_in.csv  <Model>_ref.csv  <Model>_ref.opt  README.md
 
 scripts/make_cross_check.py writes such a folder into dist/cross-check/; examples/ci_check.py
---cross-check DIR re-simulates every <Model>_in.csv under DIR with the FMU beside it and compares
-with <Model>_ref.csv. The call sequence (also that of the FMI4j driver, examples/fmi4j/): set up,
-initialize, then at each row of <Model>_in.csv set the inputs (after fmi2SetTime in Model Exchange),
-read every Real output, and in Co-Simulation step to the next row's time (Model Exchange with
-continuous states: one explicit Euler step to it, so a second importer can repeat the arithmetic).
+--cross-check DIR re-simulates every <Model>_in.csv under DIR with the FMU beside it (on this
+machine's binary of it) and compares the columns of <Model>_ref.csv (FMI 3.0: cross_check3.py;
+an array's cell holds its elements separated by spaces). The call sequence (also that of the FMI4j
+driver, examples/fmi4j/): set up, initialize, then at each row of <Model>_in.csv set the inputs
+(after fmi2SetTime in Model Exchange), read the outputs, and in Co-Simulation step to the next
+row's time (Model Exchange with continuous states: one explicit Euler step to it, so a second
+importer can repeat the arithmetic).
 
 Tolerance per value: |y - y_ref| <= ABSOLUTE + RELATIVE * |y_ref|, 1e-12 each; the FMUs compute
 in double precision to ~1e-16, and the reference inputs keep every angle at least 0.5 rad from a
 singular configuration."""
 import csv
-import ctypes
 import pathlib
 import shutil
 import tempfile
@@ -23,6 +24,8 @@ import tempfile
 import numpy as np
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Model, FMU2Slave
+
+from cross_check3 import euler_step, simulate3
 
 RELATIVE = 1e-12
 ABSOLUTE = 1e-12
@@ -42,11 +45,12 @@ def real_names(model_description, causality):
             if v.type == "Real" and v.causality == causality]
 
 
-def simulate(fmu, interface, times, input_names, inputs):
-    """(output names, array len(times) x outputs) of the FMU ('cs' or 'me') over the inputs."""
+def simulate(fmu, interface, times, input_names, inputs, output_names=None):
+    """(output names, array len(times) x outputs) of the FMI 2 FMU ('cs' or 'me') over the inputs:
+    the named outputs, by default every Real output."""
     description = read_model_description(fmu)
     vr = {v.name: v.valueReference for v in description.modelVariables}
-    output_names = real_names(description, "output")
+    output_names = output_names or real_names(description, "output")
     unzipdir = extract(fmu, unzipdir=tempfile.mkdtemp())
     try:
         if interface == "cs":
@@ -77,16 +81,8 @@ def simulate(fmu, interface, times, input_names, inputs):
                 instance.doStep(currentCommunicationPoint=time,
                                 communicationStepSize=times[row + 1] - time)
             if interface == "me" and states and row + 1 < len(times):
-                # One explicit Euler step to the next row, element by element in doubles: the
-                # FMI4j driver does the same arithmetic, so the two importers agree bit for bit.
-                h = float(times[row + 1] - time)
-                x, dx = (ctypes.c_double * states)(), (ctypes.c_double * states)()
-                instance.getContinuousStates(x, states)
-                instance.getDerivatives(dx, states)
-                for k in range(states):
-                    x[k] = x[k] + h * dx[k]
-                instance.setContinuousStates(x, states)
-                instance.completedIntegratorStep()
+                # the same arithmetic as the FMI4j driver: the two agree bit for bit
+                euler_step(instance, states, float(times[row + 1] - time), instance.getDerivatives)
         instance.terminate()
         instance.freeInstance()
     finally:
@@ -95,14 +91,21 @@ def simulate(fmu, interface, times, input_names, inputs):
 
 
 def write_csv(path, names, table):
+    """The cross-check's CSV: quoted names, one row per time, numbers as C literals."""
     header = ",".join(f'"{name}"' for name in names)
     np.savetxt(path, table, delimiter=",", fmt="%.17g", header=header, comments="")
 
 
 def read_csv(path):
+    """(names, table); a cell of several numbers separated by spaces (an FMI 3 array) becomes
+    the columns name[1], name[2], ..."""
     with open(path, newline="") as file:
-        names = next(csv.reader(file))  # quoted: names such as R[1,2] hold commas
-    return names, np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+        rows = list(csv.reader(file))
+    cells = [[np.array(cell.split(), dtype=float) for cell in row] for row in rows[1:]]
+    names = []
+    for name, cell in zip(rows[0], cells[0]):
+        names += [name] if len(cell) == 1 else [f"{name}[{k + 1}]" for k in range(len(cell))]
+    return names, np.array([np.concatenate(row) for row in cells], ndmin=2)
 
 
 def read_options(path):
@@ -113,8 +116,9 @@ def read_options(path):
     return options
 
 
-def check_model(folder, interface):
-    """Re-simulates one <Model>/ folder; prints one line per output; returns 0 ok, 1 deviation."""
+def check_model(folder, interface, fmi_version="2.0", label=""):
+    """Re-simulates one <Model>/ folder; prints one line per deviating output and one summary
+    line; returns 0 ok, 1 deviation."""
     model = folder.name
     in_names, inputs = read_csv(folder / f"{model}_in.csv")
     ref_names, reference = read_csv(folder / f"{model}_ref.csv")
@@ -123,11 +127,12 @@ def check_model(folder, interface):
     if abs(times[0] - options["StartTime"]) > 1e-12 or abs(times[-1] - options["StopTime"]) > 1e-12:
         print(f"{folder}: the time grid of {model}_in.csv does not span {model}_ref.opt's")
         return 1
-    names, outputs = simulate(str(folder / f"{model}.fmu"), interface, times, in_names[1:],
-                              inputs[:, 1:])
-    if ref_names[1:] != names or len(reference) != len(outputs):
-        print(f"{folder}: {model}_ref.csv has other outputs or rows than the FMU gives")
+    if len(reference) != len(times) or not np.array_equal(reference[:, 0], times):
+        print(f"{folder}: {model}_ref.csv has other times than {model}_in.csv")
         return 1
+    run = simulate if fmi_version == "2.0" else simulate3
+    names, outputs = run(str(folder / f"{model}.fmu"), interface, times, in_names[1:],
+                         inputs[:, 1:], ref_names[1:])
     status = 0
     for k, name in enumerate(names):
         deviation = np.abs(outputs[:, k] - reference[:, k + 1])
@@ -137,15 +142,15 @@ def check_model(folder, interface):
             status = 1
             print(f"DIFFERENT {interface} {model} {name}: {deviation[worst]:.3g} at "
                   f"t = {times[worst]:g} s ({ratio[worst]:.3g} of the tolerance)")
-    largest = max(float(np.max(np.abs(outputs[:, k] - reference[:, k + 1])))
-                  for k in range(len(names)))
-    print(f"{'ok' if status == 0 else 'FAILED':>9} {interface} {model}: {len(names)} outputs x "
-          f"{len(times)} rows, largest deviation {largest:.3g}")
+    largest = float(np.max(np.abs(outputs - reference[:, 1:])))
+    print(f"{'ok' if status == 0 else 'FAILED':>9} {fmi_version} {interface} {label} "
+          f"{model}: {len(names)} outputs x {len(times)} rows, largest deviation {largest:.3g}")
     return status
 
 
 def check_folder(root):
-    """Every <Model>_ref.opt under root, its interface from the path (.../cs/... or .../me/...)."""
+    """Every <Model>_ref.opt under root; FMI version and interface from its path
+    (fmus/<version>/<cs|me>/<platform>/<Tool_ID>/<tool version>/<Model>)."""
     folders = sorted(path.parent for path in pathlib.Path(root).rglob("*_ref.opt"))
     if not folders:
         print(f"no *_ref.opt under {root}")
@@ -153,7 +158,6 @@ def check_folder(root):
     print(f"tolerance per value: {ABSOLUTE:g} + {RELATIVE:g} * |reference|")
     status = 0
     for folder in folders:
-        parts = folder.relative_to(root).parts
-        interface = "me" if "me" in parts else "cs"
-        status = max(status, check_model(folder, interface))
+        fmi_version, interface = folder.parts[-6], folder.parts[-5]
+        status = max(status, check_model(folder, interface, fmi_version, folder.parts[-4]))
     return status

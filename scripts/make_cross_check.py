@@ -1,13 +1,14 @@
-"""Writes dist/cross-check/: every stateless FMI 2 FMU of dist/ with its reference inputs and our own
-results, per interface, in the layout of the FMI Cross-Check (examples/cross_check.py describes it).
-An FMU with continuous states (AttitudePropagator) is left out, and said so: its outputs are not a
-function of each row's inputs, which is what this layout's README promises.
+"""Writes dist/cross-check/: every FMU of dist/ (FMI 2.0) and dist/fmi3/ (FMI 3.0) with its
+reference inputs and our own results, per interface and per platform the FMU carries, in the
+layout of the FMI Cross-Check (examples/cross_check.py describes it). Check it with
+`python -m fmpy.cross_check.validate_vendor_repo dist/cross-check`.
 
     .venv/bin/python scripts/make_cross_check.py [--dist DIR] [--out DIR]"""
 import argparse
 import pathlib
 import shutil
 import sys
+import zipfile
 
 import numpy as np
 from fmpy import read_model_description
@@ -16,53 +17,74 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "examples"))
 sys.path.insert(0, str(ROOT))
 from codegen.project import VERSION  # noqa: E402
-from cross_check import (START, STEP, STOP, real_names, reference_inputs, simulate,  # noqa: E402
-                         write_csv)
+from cross_check import START, STEP, STOP, reference_inputs, simulate, write_csv  # noqa: E402
+from cross_check3 import simulate3, write_csv3  # noqa: E402
+from cross_check_readme import TOOL_ID, readme  # noqa: E402
 
-README = """# {model} ({interface}), AngularKinematics {version}
+# The reference variables (the rules recommend at most 10), FMI 2 names; in FMI 3 the arrays that
+# hold these elements. Together they determine the main outputs: omega and alpha in the fixed
+# frame are R(q) times the body ones; alpha_fixed/alpha_body of EulerRates are its inputs' alpha.
+REFERENCE_OUTPUTS = {
+    "AngularKinematics": [f"{n}[{i}]" for n in ("omega_body", "alpha_body") for i in (1, 2, 3)]
+    + [f"q[{i}]" for i in (1, 2, 3, 4)],
+    "EulerRates": [f"{n}[{i}]" for n in ("theta_dot", "theta_ddot") for i in (1, 2, 3)]
+    + ["singularity_distance"],
+    "AttitudePropagator": [f"q[{i}]" for i in (1, 2, 3, 4)]
+    + [f"{n}[{i}]" for n in ("theta", "theta_dot") for i in (1, 2, 3)],
+}
 
-Made by scripts/make_cross_check.py from dist/{model}.fmu. {model}_in.csv holds the inputs at
-every communication point (StepSize {step} s from {start} to {stop} s); {model}_ref.csv every Real
-output of the FMU at that point, computed by the FMU itself through fmpy with this call sequence:
-set up and initialize, then at each row set the inputs{me_note}, read the outputs{cs_note}. The model
-has no state: each output row is its function of that row's inputs alone, so any master that sets
-a row's inputs and reads the outputs at the same time must get these numbers to within
-1e-12 + 1e-12 |reference| (`python examples/ci_check.py --cross-check DIR` checks that).
-"""
+
+def platforms(fmu):
+    """The binaries/<platform>/ folders of the FMU: the FMI 2 names (linux64, win64) are the
+    cross-check's; FMI 3's are its platform tuples (x86_64-linux, ...)."""
+    with zipfile.ZipFile(fmu) as archive:
+        return sorted({n.split("/")[1] for n in archive.namelist()
+                       if n.startswith("binaries/") and n.count("/") >= 2 and n.split("/")[1]})
+
+
+def input_names(description):
+    """FMI 2 element names of the Float64/Real inputs (FMI 3 arrays expanded: theta[1], ...)."""
+    names = []
+    for v in description.modelVariables:
+        if v.causality == "input" and v.type in ("Real", "Float64"):
+            count = int(np.prod([int(d.start) for d in v.dimensions])) if v.dimensions else 1
+            names += [v.name] if not v.dimensions else [f"{v.name}[{k + 1}]" for k in range(count)]
+    return names
+
+
+def reference_run(fmu, interface):
+    """The reference experiment of the FMU in one interface: (description, write, table of the
+    inputs, table of the reference outputs), each table with its names, time first; write is
+    the CSV writer of the FMU's FMI version."""
+    description = read_model_description(str(fmu))
+    times = np.round(np.arange(START, STOP + STEP / 2, STEP), 12)
+    inputs_names = input_names(description)
+    inputs = reference_inputs(inputs_names, times)
+    run, write = ((simulate, write_csv) if description.fmiVersion == "2.0"
+                  else (simulate3, write_csv3))
+    names, outputs = run(str(fmu), interface, times, inputs_names, inputs,
+                         REFERENCE_OUTPUTS[description.modelName])
+    return (description, write, (["time"] + inputs_names, np.column_stack([times, inputs])),
+            (["time"] + names, np.column_stack([times, outputs])))
 
 
 def make(fmu, out):
-    description = read_model_description(str(fmu))
-    model = description.modelName
-    if description.fmiVersion != "2.0":
-        return []
-    if description.numberOfContinuousStates:
-        print(f"skipped {fmu.name}: {description.numberOfContinuousStates} continuous states, its "
-              "outputs are not a function of each row's inputs alone")
-        return []
-    times = np.round(np.arange(START, STOP + STEP / 2, STEP), 12)
-    input_names = real_names(description, "input")
-    inputs = reference_inputs(input_names, times)
     written = []
-    for interface, present in (("cs", description.coSimulation),
-                               ("me", description.modelExchange)):
-        if present is None:
-            continue
-        folder = out / "fmus" / "2.0" / interface / "linux64" / "AngularKinematics" / VERSION / model
-        folder.mkdir(parents=True, exist_ok=True)
-        shutil.copyfile(fmu, folder / f"{model}.fmu")
-        write_csv(folder / f"{model}_in.csv", ["time"] + input_names,
-                  np.column_stack([times, inputs]))
-        names, outputs = simulate(str(fmu), interface, times, input_names, inputs)
-        write_csv(folder / f"{model}_ref.csv", ["time"] + names, np.column_stack([times, outputs]))
-        (folder / f"{model}_ref.opt").write_text(
-            f"StartTime, {START}\nStopTime, {STOP}\nStepSize, {STEP}\nRelTol, 0\n")
-        (folder / "ReadMe.md").write_text(README.format(
-            model=model, interface={"cs": "Co-Simulation", "me": "Model Exchange"}[interface],
-            version=VERSION, step=STEP, start=START, stop=STOP,
-            me_note=" (after fmi2SetTime)" if interface == "me" else "",
-            cs_note=", then fmi2DoStep to the next row" if interface == "cs" else ""))
-        written.append(folder)
+    for interface in ("cs", "me"):
+        description, write, inputs, outputs = reference_run(fmu, interface)
+        model, version = description.modelName, description.fmiVersion
+        for platform in platforms(fmu):
+            folder = out / "fmus" / version / interface / platform / TOOL_ID / VERSION / model
+            folder.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(fmu, folder / f"{model}.fmu")
+            write(folder / f"{model}_in.csv", *inputs)
+            write(folder / f"{model}_ref.csv", *outputs)
+            (folder / f"{model}_ref.opt").write_text(
+                f"StartTime, {START}\nStopTime, {STOP}\nStepSize, {STEP}\nRelTol, 0\n")
+            (folder / "README.md").write_text(readme(
+                model, version, interface, platform, outputs[0][1:],
+                description.numberOfContinuousStates))
+            written.append(folder)
     return written
 
 
@@ -73,7 +95,8 @@ def main(argv=None):
     args = parser.parse_args(argv)
     out = pathlib.Path(args.out)
     shutil.rmtree(out, ignore_errors=True)
-    fmus = sorted(pathlib.Path(args.dist).glob("*.fmu"))
+    dist = pathlib.Path(args.dist)
+    fmus = sorted(dist.glob("*.fmu")) + sorted((dist / "fmi3").glob("*.fmu"))
     if not fmus:
         print(f"no .fmu in {args.dist}: build first (bash scripts/build.sh)")
         return 2

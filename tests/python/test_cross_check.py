@@ -1,21 +1,33 @@
-"""dist/cross-check/ (scripts/make_cross_check.py): the FMI Cross-Check layout for every FMU and
-interface, our results right against the 40-digit reference, and examples/ci_check.py
---cross-check passing on it and failing on a result moved by 1e-9."""
+"""dist/cross-check/ (scripts/make_cross_check.py): fmpy's cross-check validator reports 0
+problems (and a problem for a name fmpy's reader splits); every model in every FMI version,
+interface and platform the FMUs carry; at most 10 reference values, named as in the FMU, the inputs
+as the FMU's; FMI 3.0 results equal FMI 2.0's; AngularKinematics right against the 40-digit
+reference; examples/ci_check.py --cross-check passing on it and failing on a moved value."""
 import pathlib
+import re
+import shutil
 import subprocess
 import sys
+import zipfile
 
 import numpy as np
 import pytest
+from fmpy import read_model_description
+from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
 
 import reference
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "examples"))
+sys.path.insert(0, str(ROOT / "scripts"))
 from codegen.project import VERSION  # noqa: E402
 from cross_check import read_csv, read_options  # noqa: E402
+from cross_check_readme import TOOL_ID  # noqa: E402
 
-MODELS = ["AngularKinematics", "EulerRates"]
+MODELS = ["AngularKinematics", "AttitudePropagator", "EulerRates"]
+PLATFORMS = {"2.0": {"linux64", "win64"},
+             "3.0": {"x86_64-linux", "x86_64-windows", "aarch64-linux"}}
+FMUS = {"2.0": ROOT / "dist", "3.0": ROOT / "dist" / "fmi3"}
 
 
 def run(*arguments):
@@ -31,56 +43,137 @@ def folder(tmp_path_factory, fmu_path, euler_fmu_path):
     return out
 
 
-def model_folder(root, interface, model):
-    return root / "fmus" / "2.0" / interface / "linux64" / "AngularKinematics" / VERSION / model
+def model_folder(root, version, interface, platform, model):
+    return root / "fmus" / version / interface / platform / TOOL_ID / VERSION / model
+
+
+def cases():
+    return [(v, i, p, m) for v in PLATFORMS for i in ("cs", "me") for p in sorted(PLATFORMS[v])
+            for m in MODELS]
+
+
+def test_validator_reports_no_problems(folder, report):
+    done = run("-m", "fmpy.cross_check.validate_vendor_repo", folder)
+    report(done.stdout.strip().splitlines()[1])
+    assert done.returncode == 0, done.stdout[-3000:]
+    assert f"0 problems found in {folder}" in done.stdout
+    assert "Validated 30 FMUs" in done.stdout  # 12 FMI 2 folders, 18 FMI 3 (counted, not read)
+    # It skips fmus/3.0/: its check of one folder, run on each FMI 3 folder.
+    fmi3 = [model_folder(folder, *case) for case in cases() if case[0] == "3.0"]
+    assert len(fmi3) == 18 and all(validate_test_fmu(str(here)) == [] for here in fmi3)
+
+
+def test_validator_fails_on_a_name_with_a_comma(folder, tmp_path):
+    """What it said of the old AngularKinematics_ref.csv: fmpy's reader splits "R[1,1]"."""
+    source = model_folder(folder, "2.0", "cs", "linux64", "AngularKinematics")
+    copy = model_folder(tmp_path, "2.0", "cs", "linux64", "AngularKinematics")
+    shutil.copytree(source, copy)
+    path = copy / "AngularKinematics_ref.csv"
+    path.write_text(path.read_text().replace('"q[1]"', '"R[1,1]"', 1))
+    done = run("-m", "fmpy.cross_check.validate_vendor_repo", tmp_path)
+    assert done.returncode == 1 and "1 problems found" in done.stdout, done.stdout[-2000:]
+    assert "AngularKinematics_ref.csv" in done.stdout
+
+
+@pytest.mark.parametrize("version,interface,platform,model", cases())
+def test_layout(folder, version, interface, platform, model):
+    here = model_folder(folder, version, interface, platform, model)
+    assert {p.name for p in here.iterdir()} == {
+        f"{model}.fmu", f"{model}_in.csv", f"{model}_ref.csv", f"{model}_ref.opt", "README.md"}
+    fmu = FMUS[version] / f"{model}.fmu"
+    assert (here / f"{model}.fmu").read_bytes() == fmu.read_bytes()
+    with zipfile.ZipFile(fmu) as archive:
+        assert any(n.startswith(f"binaries/{platform}/") for n in archive.namelist())
+    assert read_options(here / f"{model}_ref.opt") == dict(StartTime=0.0, StopTime=4.0,
+                                                           StepSize=0.01, RelTol=0.0)
+    description = read_model_description(str(fmu))
+    inputs = [v.name for v in description.modelVariables if v.causality == "input"]
+    in_header = (here / f"{model}_in.csv").read_text().splitlines()[0]
+    assert in_header == ",".join(f'"{n}"' for n in ["time"] + inputs)
+    ref_header = (here / f"{model}_ref.csv").read_text().splitlines()[0].split(",")
+    names = {v.name for v in description.modelVariables}
+    assert all(n.strip('"') in names for n in ref_header[1:]) and "," not in "".join(ref_header)
+    in_names, in_table = read_csv(here / f"{model}_in.csv")
+    ref_names, ref_table = read_csv(here / f"{model}_ref.csv")
+    assert len(ref_names) - 1 <= 10  # values, not only columns: an FMI 3 array counts its elements
+    assert len(in_table) == len(ref_table) == 401
+    assert np.array_equal(in_table[:, 0], ref_table[:, 0])
+    assert f"`{TOOL_ID}`" in (here / "README.md").read_text()
+
+
+@pytest.mark.parametrize("version", sorted(PLATFORMS))
+def test_three_fmus_for_each_platform_and_variant(folder, version):
+    """The rules ask an exporting tool for at least three FMUs per platform and FMI variant: the
+    platforms are the FMUs' binaries/ folders, every model in each."""
+    for model in MODELS:
+        with zipfile.ZipFile(FMUS[version] / f"{model}.fmu") as archive:
+            carried = {n.split("/")[1] for n in archive.namelist()
+                       if n.startswith("binaries/") and n.count("/") >= 2}
+        assert carried == PLATFORMS[version]
+    for interface in ("cs", "me"):
+        here = folder / "fmus" / version / interface
+        assert {p.name for p in here.iterdir()} == PLATFORMS[version]
+        for platform in PLATFORMS[version]:
+            models = here / platform / TOOL_ID / VERSION
+            assert sorted(p.name for p in models.iterdir()) == MODELS
+
+
+def test_tool_folder_is_an_id():
+    """The IDs of fmi-standard.org's tools list are letters, digits, '_', '-', '.'."""
+    assert re.fullmatch(r"[A-Za-z][A-Za-z0-9_.-]*", TOOL_ID)
 
 
 @pytest.mark.parametrize("interface", ["cs", "me"])
 @pytest.mark.parametrize("model", MODELS)
-def test_layout(folder, interface, model):
-    here = model_folder(folder, interface, model)
-    expected = {f"{model}.fmu", f"{model}_in.csv", f"{model}_ref.csv", f"{model}_ref.opt",
-                "ReadMe.md"}
-    assert {p.name for p in here.iterdir()} == expected
-    assert read_options(here / f"{model}_ref.opt") == dict(StartTime=0.0, StopTime=4.0,
-                                                           StepSize=0.01, RelTol=0.0)
-    inputs = read_csv(here / f"{model}_in.csv")[1]
-    outputs = read_csv(here / f"{model}_ref.csv")[1]
-    assert len(inputs) == len(outputs) == 401
-    assert np.array_equal(inputs[:, 0], outputs[:, 0])
+def test_fmi3_results_equal_fmi2(folder, interface, model):
+    fmi2 = read_csv(model_folder(folder, "2.0", interface, "linux64", model) / f"{model}_ref.csv")
+    fmi3 = read_csv(model_folder(folder, "3.0", interface, "x86_64-linux", model) /
+                    f"{model}_ref.csv")
+    assert fmi2[0] == fmi3[0]
+    assert np.array_equal(fmi2[1], fmi3[1])
 
 
 @pytest.mark.parametrize("interface", ["cs", "me"])
 def test_reference_results_are_right(folder, interface, report):
     """Our shipped numbers, against the sympy/mpmath reference (40 digits), every 20th row."""
-    here = model_folder(folder, interface, "AngularKinematics")
+    here = model_folder(folder, "2.0", interface, "linux64", "AngularKinematics")
     in_names, inputs = read_csv(here / "AngularKinematics_in.csv")
     out_names, outputs = read_csv(here / "AngularKinematics_ref.csv")
-    columns_in = [in_names.index(n) for n in reference.INPUT_NAMES]
-    columns_out = [out_names.index(n) for n in reference.OUTPUT_NAMES]
+    inputs = inputs[:, [in_names.index(n) for n in reference.INPUT_NAMES]]
+    body = [n for n in reference.OUTPUT_NAMES if "_body" in n] + [f"q[{i}]" for i in range(1, 5)]
+    got = outputs[:, [out_names.index(n) for n in body]]
     worst = 0.0
     for row in range(0, len(inputs), 20):
-        exact = reference.outputs(inputs[row, columns_in])
-        error = np.abs(outputs[row, columns_out] - exact) / (1 + np.abs(exact))
-        worst = max(worst, float(error.max()))
+        exact = reference.outputs(inputs[row])
+        exact = np.concatenate([[exact[reference.OUTPUT_NAMES.index(n)] for n in body[:6]],
+                                reference.quaternion("body123", inputs[row][:3])])
+        worst = max(worst, float((np.abs(got[row] - exact) / (1 + np.abs(exact))).max()))
     report(f"{interface}: AngularKinematics_ref.csv vs 40-digit reference: {worst:.2e} (21 rows)")
     assert worst < 1e-14
 
 
-def test_ci_check_passes_then_fails_on_a_moved_value(folder, tmp_path, report):
+def move(path, row, column, element=0, factor=1 + 1e-9):
+    lines = path.read_text().splitlines()
+    cells = lines[row].split(",")
+    values = cells[column].split()
+    values[element] = repr(float(values[element]) * factor)
+    cells[column] = " ".join(values)
+    lines[row] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+
+
+def test_ci_check_passes_then_fails_on_a_moved_value(folder, report):
     done = run(ROOT / "examples" / "ci_check.py", "--cross-check", folder)
     assert done.returncode == 0, done.stdout + done.stderr
-    assert done.stdout.count(" ok ") == 4 and "largest deviation 0\n" in done.stdout
+    assert done.stdout.count(" ok ") == 30 and done.stdout.count("largest deviation 0\n") == 30
 
-    here = model_folder(folder, "me", "EulerRates")
-    path = here / "EulerRates_ref.csv"
-    lines = path.read_text().splitlines()
-    cells = lines[200].split(",")
-    cells[1] = repr(float(cells[1]) * (1 + 1e-9))  # theta_dot[1] at t = 1.99 s
-    lines[200] = ",".join(cells)
-    path.write_text("\n".join(lines) + "\n")
+    here = model_folder(folder, "2.0", "me", "win64", "EulerRates")
+    move(here / "EulerRates_ref.csv", 200, 1)  # theta_dot[1] at t = 1.99 s
+    here = model_folder(folder, "3.0", "cs", "aarch64-linux", "AttitudePropagator")
+    move(here / "AttitudePropagator_ref.csv", 301, 1, element=2)  # q[3] at t = 3 s
     done = run(ROOT / "examples" / "ci_check.py", "--cross-check", folder)
-    report(f"a 1e-9 relative change of one value: exit {done.returncode}")
+    report(f"a 1e-9 relative change of one value in each of two folders: exit {done.returncode}")
     assert done.returncode == 1, done.stdout
-    assert "DIFFERENT me EulerRates theta_dot[1]" in done.stdout
-    assert "t = 1.99 s" in done.stdout
+    assert "DIFFERENT me EulerRates theta_dot[1]" in done.stdout and "t = 1.99 s" in done.stdout
+    assert "DIFFERENT cs AttitudePropagator q[3]" in done.stdout and "t = 3 s" in done.stdout
+    assert done.stdout.count(" ok ") == 28 and done.stdout.count("FAILED ") == 2

@@ -1,0 +1,57 @@
+"""The README.md of each folder of dist/cross-check/ (scripts/make_cross_check.py), and the tool
+folder's name.
+
+TOOL_ID: the cross-check's README asks for the exporting tool's ID from fmi-standard.org's tools
+list (then _data/tools.csv, now static/assets/tools.json); a new tool gets one by a pull request
+to modelica/fmi-standard.org that adds its entry. AngularKinematics is not listed yet: this is the
+ID such an entry would carry (letters only, as the listed IDs), to be confirmed there before the
+folder is submitted."""
+from cross_check import START, STEP, STOP
+
+TOOL_ID = "AngularKinematics"
+HOST = {"2.0": "linux64", "3.0": "x86_64-linux"}
+TEXT = """# {model} ({interface}, FMI {version}, {platform})
+
+The FMU `{model}.fmu` of AngularKinematics {tool_version}, made by `scripts/make_cross_check.py`.
+Tool ID `{tool}`: the ID this tool asks for; it is not yet in fmi-standard.org's tools list
+(AngularKinematics' docs/cosimulation.md says how a new tool gets listed).
+
+- `{model}_in.csv`: every input at every communication point, from {start} s to {stop} s in steps
+  of {step} s (input k, counted from 0: 0.2 (k mod 3 + 1) + 0.6 sin((0.7 + 0.3 k) t + 0.5 k)).
+- `{model}_ref.csv`: {outputs}, computed by the FMU itself ({host} binary, through fmpy){other}.
+- `{model}_ref.opt`: StartTime, StopTime, StepSize; RelTol 0: a fixed-step master, no tolerance.
+
+The master that made the reference: set up and initialize; at each row set that row's inputs
+{me_time}and read the outputs; then {advance}. {memory}
+
+`python examples/ci_check.py --cross-check DIR` re-simulates this folder with that master and
+requires every value within 1e-12 + 1e-12 |reference|.
+"""
+STATELESS = ("The model has no state: each output row is a function of that row's inputs alone, "
+             "so any master that sets a row's inputs and reads the outputs gets these numbers.")
+STATEFUL = ("The model integrates its {n} states q from the inputs, so its numbers depend on the "
+            "master: this one sets each row's inputs once and {how}; a master that interpolates "
+            "the inputs between rows or integrates otherwise gets other numbers.")
+
+
+def readme(model, version, interface, platform, outputs, states):
+    how = (f"lets fmi{version[0]}DoStep integrate to the next row" if interface == "cs"
+           else "takes one explicit Euler step per row")
+    memory = STATEFUL.format(n=states, how=how) if states else STATELESS
+    advance = ("step to the next row's time (fmi{}DoStep)".format(version[0]) if interface == "cs"
+               else "take one explicit Euler step of the states to the next row's time"
+               if states else "go to the next row")
+    other = ("" if platform == HOST[version] else
+             f"; this folder's {platform} binary prints the same to within 2 units in the last "
+             "place (tests/python/test_windows_binary.py, test_fmi3_platforms.py)")
+    return TEXT.format(
+        model=model, interface={"cs": "Co-Simulation", "me": "Model Exchange"}[interface],
+        version=version, platform=platform, tool=TOOL_ID, tool_version=_version(),
+        start=START, stop=STOP, step=STEP, outputs=", ".join(f"`{n}`" for n in outputs),
+        host=HOST[version], other=other, advance=advance, memory=memory,
+        me_time=f"(after fmi{version[0]}SetTime) " if interface == "me" else "")
+
+
+def _version():
+    from codegen.project import VERSION
+    return VERSION

@@ -1,0 +1,148 @@
+"""ls_ref/ (scripts/make_ls_ref.py): the reference result each FMU is to carry in
+extra/org.fmi-standard.fmi-ls-ref/ (FMI-LS-REF 1.0.0-alpha.1). The committed files are what the
+built FMUs compute; each manifest names its experiment's inputs and result; examples/ci_check.py
+--ls-ref passes on an FMU carrying them, fails on a moved value and reports an FMU carrying none."""
+import pathlib
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+import zipfile
+
+import numpy as np
+import pytest
+from fmpy import read_model_description
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "examples"))
+from cross_check import read_csv  # noqa: E402
+from ls_ref import FOLDER, LS  # noqa: E402
+
+MODELS = ["AngularKinematics", "AttitudePropagator", "EulerRates"]
+CASES = [(v, m) for v in ("fmi2", "fmi3") for m in MODELS]
+
+
+def run(*arguments):
+    return subprocess.run([sys.executable, *map(str, arguments)], capture_output=True, text=True,
+                          timeout=300, cwd=ROOT)
+
+
+def dist_fmu(version, model):
+    return ROOT / "dist" / ("" if version == "fmi2" else "fmi3") / f"{model}.fmu"
+
+
+def without_ls_ref(source, path):
+    """A copy of the FMU without extra/org.fmi-standard.fmi-ls-ref/."""
+    with zipfile.ZipFile(source) as archive, zipfile.ZipFile(path, "w") as out:
+        for item in archive.infolist():
+            if not item.filename.startswith(FOLDER):
+                out.writestr(item, archive.read(item))
+    return path
+
+
+def carrying(tmp_path, version, model, change=None):
+    """A copy of the dist FMU with ls_ref/'s files in extra/ (what CMake is to package);
+    change(name, text) -> text may alter a file on the way."""
+    path = without_ls_ref(dist_fmu(version, model), tmp_path / f"{model}_{version}.fmu")
+    with zipfile.ZipFile(path, "a") as archive:
+        for file in sorted((ROOT / "ls_ref" / version / model).iterdir()):
+            text = file.read_text()
+            archive.writestr(FOLDER + file.name, change(file.name, text) if change else text)
+    return path
+
+
+def test_committed_files_are_what_the_fmus_compute(tmp_path, fmu_path, report):
+    """Manifests byte for byte; CSV files to 1e-12 relative (numpy's sin, which makes the inputs,
+    may differ in the last bit on another machine), names and times exactly."""
+    done = run(ROOT / "scripts" / "make_ls_ref.py", "--out", tmp_path)
+    assert done.returncode == 0, done.stdout + done.stderr
+    made = sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*") if p.is_file())
+    committed = sorted(p.relative_to(ROOT / "ls_ref") for p in (ROOT / "ls_ref").rglob("*")
+                       if p.is_file())
+    assert made == committed and len(made) == 18
+    stale, largest = [], 0.0
+    for path in made:
+        if path.suffix != ".csv":
+            stale += [] if (tmp_path / path).read_bytes() == (ROOT / "ls_ref" / path).read_bytes() \
+                else [str(path)]
+            continue
+        (names, new), (old_names, old) = read_csv(tmp_path / path), read_csv(ROOT / "ls_ref" / path)
+        if names != old_names or new.shape != old.shape or not np.array_equal(new[:, 0], old[:, 0]):
+            stale.append(str(path))
+            continue
+        largest = max(largest, float(np.max(np.abs(new - old) / (1 + np.abs(old)))))
+        stale += [] if np.allclose(new, old, rtol=1e-12, atol=1e-12) else [str(path)]
+    report(f"ls_ref/ against a fresh run: largest difference {largest:.2g} (to 1 + |value|)")
+    assert not stale, f"run .venv/bin/python scripts/make_ls_ref.py: {stale} changed"
+
+
+@pytest.mark.parametrize("version,model", CASES)
+def test_manifest_names_the_experiment(version, model):
+    folder = ROOT / "ls_ref" / version / model
+    root = ET.parse(folder / "fmi-ls-manifest.xml").getroot()
+    assert root.tag == "fmiReferences"
+    assert root.get(LS + "fmi-ls-name") == "org.fmi-standard.fmi-ls-ref"
+    assert root.get(LS + "fmi-ls-version") == "1.0.0-alpha.1"
+    experiment = root.find("Experiment")
+    stimuli = experiment.find("Stimuli").get("source")
+    result = experiment.find("References").get("source")
+    assert (stimuli, result) == (f"{model}_in.csv", f"{model}_out.csv")
+    roles = {r.get("source"): r.get("role") for r in root.findall("Related")}
+    assert roles == {stimuli: "testcase", result: "result"}
+    in_names, inputs = read_csv(folder / stimuli)
+    out_names, outputs = read_csv(folder / result)
+    assert np.array_equal(inputs[:, 0], outputs[:, 0]) and len(inputs) == 401
+    assert [float(experiment.get(k)) for k in ("startTime", "stopTime", "stepSize")] == [
+        inputs[0, 0], inputs[-1, 0], 0.01]
+    description = read_model_description(str(dist_fmu(version, model)))
+    header = (folder / stimuli).read_text().splitlines()[0]
+    assert header == ",".join(f'"{n}"' for n in ["time"] + [
+        v.name for v in description.modelVariables if v.causality == "input"])
+    assert 1 < len(out_names) - 1 <= 10
+
+
+@pytest.mark.parametrize("version,model", CASES)
+def test_ci_check_passes_on_an_fmu_carrying_its_reference(tmp_path, version, model):
+    done = run(ROOT / "examples" / "ci_check.py", "--ls-ref", carrying(tmp_path, version, model))
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "largest deviation 0\n" in done.stdout and "PASSED" in done.stdout
+
+
+def test_ci_check_fails_on_a_moved_value_and_without_a_reference(tmp_path, report):
+    def move(name, text):
+        if not name.endswith("_out.csv"):
+            return text
+        lines = text.splitlines()
+        cells = lines[101].split(",")  # t = 1 s
+        values = cells[1].split()
+        values[1] = repr(float(values[1]) * (1 + 1e-9))  # q[2]
+        cells[1] = " ".join(values)
+        lines[101] = ",".join(cells)
+        return "\n".join(lines) + "\n"
+    fmu = carrying(tmp_path, "fmi3", "AttitudePropagator", move)
+    done = run(ROOT / "examples" / "ci_check.py", "--ls-ref", fmu)
+    report(f"a 1e-9 relative change of one carried value: exit {done.returncode}")
+    assert done.returncode == 1, done.stdout
+    assert "DIFFERENT cs AttitudePropagator q[2]" in done.stdout and "t = 1 s" in done.stdout
+    bare = without_ls_ref(dist_fmu("fmi2", "EulerRates"), tmp_path / "bare.fmu")
+    done = run(ROOT / "examples" / "ci_check.py", "--ls-ref", bare)
+    assert done.returncode == 2 and "carries no extra/org.fmi-standard.fmi-ls-ref/" in done.stdout
+
+
+@pytest.mark.parametrize("version,model", CASES)
+def test_dist_fmus_carry_ls_ref(version, model):
+    """Once CMake packages ls_ref/ (not yet: docs/cosimulation.md), the FMU's files are these."""
+    with zipfile.ZipFile(dist_fmu(version, model)) as archive:
+        files = {n[len(FOLDER):]: archive.read(n) for n in archive.namelist()
+                 if n.startswith(FOLDER) and not n.endswith("/")}
+    if not files:
+        pytest.skip("CMake does not package ls_ref/ into the FMUs yet")
+    folder = ROOT / "ls_ref" / version / model
+    assert files == {p.name: p.read_bytes() for p in folder.iterdir()}
+
+
+def test_ci_check_help_names_the_option():
+    done = run(ROOT / "examples" / "ci_check.py", "--help")
+    text = " ".join(done.stdout.split())
+    assert done.returncode == 0
+    assert ("--ls-ref FMU instead: re-simulate the FMU against the reference result it carries "
+            "(FMI-LS-REF,") in text
