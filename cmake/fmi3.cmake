@@ -76,6 +76,9 @@ function(ak_add_fmu3 model)
   endforeach()
   list(TRANSFORM AK_DOCUMENTATION_FIGURES_${model} PREPEND "${CMAKE_SOURCE_DIR}/"
        OUTPUT_VARIABLE _figures)
+  set(_ls_ref_dir "${CMAKE_SOURCE_DIR}/ls_ref/fmi3/${model}")
+  set(_ls_ref "${_ls_ref_dir}/fmi-ls-manifest.xml" "${_ls_ref_dir}/${model}_in.csv"
+      "${_ls_ref_dir}/${model}_out.csv")
   set(_fmu "${AK_DIST_DIR}/fmi3/${model}.fmu")
   add_custom_command(
     OUTPUT "${_fmu}"
@@ -92,12 +95,14 @@ function(ak_add_fmu3 model)
     COMMAND ${CMAKE_COMMAND} -E copy "$<TARGET_FILE:${_target}>"
             "${_package}/binaries/${FMI3_PLATFORM}/"
     ${_copy_extra}
+    COMMAND ${CMAKE_COMMAND} -E make_directory "${_package}/extra/org.fmi-standard.fmi-ls-ref"
+    COMMAND ${CMAKE_COMMAND} -E copy ${_ls_ref} "${_package}/extra/org.fmi-standard.fmi-ls-ref/"
     COMMAND ${CMAKE_COMMAND} -E make_directory "${AK_DIST_DIR}/fmi3"
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py" "${_package}" "${_fmu}"
     WORKING_DIRECTORY "${CMAKE_BINARY_DIR}"
     DEPENDS ${_target} "${_folder}/modelDescription.xml" "${_folder}/buildDescription.xml"
             "${_folder}/documentation/index.html" ${_figures} "${CMAKE_SOURCE_DIR}/model.png" ${_packaged}
-            ${_extra} "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py"
+            ${_extra} ${_ls_ref} "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py"
     COMMENT "Packaging ${_fmu}"
     VERBATIM)
   add_custom_target(fmu3_${model} ALL DEPENDS "${_fmu}")
