@@ -2,7 +2,8 @@
 # Builds the release from clean checkouts of HEAD and proves it reproducible:
 #   1. one version everywhere: codegen/project.py's VERSION, CHANGELOG.md has an entry for it;
 #   2. two clean clones, in two different folders, each set up and built (scripts/build.sh), with
-#      dist/cross-check/ (scripts/make_cross_check.py) and dist/ssp/RoundTrip.ssp (examples/ssp/);
+#      dist/cross-check/ (scripts/make_cross_check.py), dist/ssp/RoundTrip.ssp and
+#      dist/ssp/Tumbling.ssp (examples/ssp/);
 #   3. every file of the two dist/ folders compared byte for byte (no timestamps or build paths);
 #   4. the version attribute of every modelDescription.xml, CMake's project version
 #      (build/CMakeCache.txt) and the "version X.Y.Z" of the FMU documentation equal to VERSION;
@@ -41,6 +42,7 @@ for side in one two; do
     bash scripts/build.sh >build.log 2>&1 || { tail -40 build.log; exit 1; }
     .venv/bin/python scripts/make_cross_check.py >/dev/null
     .venv/bin/python examples/ssp/make_ssp.py >/dev/null
+    .venv/bin/python examples/ssp/make_tumbling_ssp.py >/dev/null
   ) || fail "the build in $clone failed"
 done
 
