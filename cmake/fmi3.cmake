@@ -76,7 +76,7 @@ function(ak_add_fmu3 model)
   endforeach()
   list(TRANSFORM AK_DOCUMENTATION_FIGURES_${model} PREPEND "${CMAKE_SOURCE_DIR}/"
        OUTPUT_VARIABLE _figures)
-  set(_ls_ref_dir "${CMAKE_SOURCE_DIR}/ls_ref/fmi3/${model}")
+  set(_ls_ref_dir "${_folder}/ls_ref")
   set(_ls_ref "${_ls_ref_dir}/fmi-ls-manifest.xml" "${_ls_ref_dir}/${model}_in.csv"
       "${_ls_ref_dir}/${model}_out.csv")
   set(_fmu "${AK_DIST_DIR}/fmi3/${model}.fmu")

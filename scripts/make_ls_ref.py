@@ -1,11 +1,13 @@
-"""Writes ls_ref/<fmi2|fmi3>/<Model>/: the reference result each FMU carries in
+"""Writes fmu_src/models/<Model>/ls_ref/ (FMI 2) and fmu_src/models/<Model>/fmi3/ls_ref/ (FMI 3):
+the reference result each FMU carries in
 extra/org.fmi-standard.fmi-ls-ref/ (the layered standard FMI-LS-REF, version 1.0.0-alpha.1, as the
 Reference FMUs carry theirs since v0.0.41): fmi-ls-manifest.xml, <Model>_in.csv (the inputs) and
 <Model>_out.csv (the result). The experiment is the cross-check's (scripts/make_cross_check.py), in
 Co-Simulation with the master of examples/cross_check.py. CMake copies the files into the FMU;
 `python examples/ci_check.py --ls-ref FMU` re-simulates an FMU against the files it carries.
 
-    .venv/bin/python scripts/make_ls_ref.py [--dist DIR] [--out DIR]"""
+    .venv/bin/python scripts/make_ls_ref.py [--dist DIR] [--out DIR]
+--out DIR writes DIR/<fmi2|fmi3>/<Model>/ instead (the test compares a fresh run with it)."""
 import argparse
 import pathlib
 import shutil
@@ -37,11 +39,18 @@ EXPERIMENT = ("Co-Simulation, fixed step: at each row of {model}_in.csv set the 
               "outputs of {model}_out.csv, step to the next row")
 
 
-def make(fmu, out):
+def model_folder(version, model):
+    """Where a model's reference result is kept: its model folder, FMI 2 or FMI 3 part."""
+    return ROOT / "fmu_src" / "models" / model / ("ls_ref" if version == "fmi2" else "fmi3/ls_ref")
+
+
+def make(fmu, out=None):
     description, write, inputs, outputs = reference_run(fmu, "cs")
     model = description.modelName
-    folder = out / ("fmi2" if description.fmiVersion == "2.0" else "fmi3") / model
-    folder.mkdir(parents=True, exist_ok=True)
+    version = "fmi2" if description.fmiVersion == "2.0" else "fmi3"
+    folder = out / version / model if out is not None else model_folder(version, model)
+    shutil.rmtree(folder, ignore_errors=True)
+    folder.mkdir(parents=True)
     write(folder / f"{model}_in.csv", *inputs)
     write(folder / f"{model}_out.csv", *outputs)
     (folder / "fmi-ls-manifest.xml").write_text(MANIFEST.format(
@@ -53,16 +62,16 @@ def make(fmu, out):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--dist", default=str(ROOT / "dist"))
-    parser.add_argument("--out", default=str(ROOT / "ls_ref"))
+    parser.add_argument("--out")
     args = parser.parse_args(argv)
-    dist, out = pathlib.Path(args.dist), pathlib.Path(args.out)
+    dist = pathlib.Path(args.dist)
+    out = pathlib.Path(args.out) if args.out else None
     fmus = sorted(dist.glob("*.fmu")) + sorted((dist / "fmi3").glob("*.fmu"))
     if not fmus:
         print(f"no .fmu in {dist}: build first (bash scripts/build.sh)")
         return 2
-    shutil.rmtree(out, ignore_errors=True)
     for fmu in fmus:
-        print(f"wrote {make(fmu, out).relative_to(out)}")
+        print(f"wrote {make(fmu, out).relative_to(out if out is not None else ROOT)}")
     return 0
 
 

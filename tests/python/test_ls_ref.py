@@ -1,5 +1,6 @@
-"""ls_ref/ (scripts/make_ls_ref.py): the reference result each FMU is to carry in
-extra/org.fmi-standard.fmi-ls-ref/ (FMI-LS-REF 1.0.0-alpha.1). The committed files are what the
+"""The reference result each FMU carries in extra/org.fmi-standard.fmi-ls-ref/ (FMI-LS-REF
+1.0.0-alpha.1), kept in each model's folder (fmu_src/models/<Model>/ls_ref/, fmi3/ls_ref/) by
+scripts/make_ls_ref.py. The committed files are what the
 built FMUs compute; each manifest names its experiment's inputs and result; examples/ci_check.py
 --ls-ref passes on an FMU carrying them, fails on a moved value and reports an FMU carrying none."""
 import pathlib
@@ -17,13 +18,19 @@ sys.path.insert(0, str(ROOT / "examples"))
 from cross_check import read_csv  # noqa: E402
 from ls_ref import FOLDER, LS  # noqa: E402
 
-MODELS = ["AngularKinematics", "AttitudePropagator", "EulerRates"]
+from codegen.project import MODELS  # noqa: E402
+
 CASES = [(v, m) for v in ("fmi2", "fmi3") for m in MODELS]
 
 
 def run(*arguments):
     return subprocess.run([sys.executable, *map(str, arguments)], capture_output=True, text=True,
                           timeout=300, cwd=ROOT)
+
+
+def committed(version, model):
+    """The model's committed files (scripts/make_ls_ref.py's model_folder)."""
+    return ROOT / "fmu_src" / "models" / model / ("ls_ref" if version == "fmi2" else "fmi3/ls_ref")
 
 
 def dist_fmu(version, model):
@@ -40,11 +47,11 @@ def without_ls_ref(source, path):
 
 
 def carrying(tmp_path, version, model, change=None):
-    """A copy of the dist FMU with ls_ref/'s files in extra/ (what CMake is to package);
+    """A copy of the dist FMU with the committed files in extra/ (what CMake packages);
     change(name, text) -> text may alter a file on the way."""
     path = without_ls_ref(dist_fmu(version, model), tmp_path / f"{model}_{version}.fmu")
     with zipfile.ZipFile(path, "a") as archive:
-        for file in sorted((ROOT / "ls_ref" / version / model).iterdir()):
+        for file in sorted(committed(version, model).iterdir()):
             text = file.read_text()
             archive.writestr(FOLDER + file.name, change(file.name, text) if change else text)
     return path
@@ -56,28 +63,29 @@ def test_committed_files_are_what_the_fmus_compute(tmp_path, fmu_path, report):
     done = run(ROOT / "scripts" / "make_ls_ref.py", "--out", tmp_path)
     assert done.returncode == 0, done.stdout + done.stderr
     made = sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*") if p.is_file())
-    committed = sorted(p.relative_to(ROOT / "ls_ref") for p in (ROOT / "ls_ref").rglob("*")
-                       if p.is_file())
-    assert made == committed and len(made) == 18
+    kept = sorted(pathlib.Path(version, model, p.name) for version, model in CASES
+                  for p in committed(version, model).iterdir())
+    assert made == kept and len(made) == 18
     stale, largest = [], 0.0
     for path in made:
         if path.suffix != ".csv":
-            stale += [] if (tmp_path / path).read_bytes() == (ROOT / "ls_ref" / path).read_bytes() \
-                else [str(path)]
+            stale += [] if (tmp_path / path).read_bytes() == committed(*path.parts[:2]).joinpath(
+                path.name).read_bytes() else [str(path)]
             continue
-        (names, new), (old_names, old) = read_csv(tmp_path / path), read_csv(ROOT / "ls_ref" / path)
+        (names, new), (old_names, old) = (read_csv(tmp_path / path),
+                                          read_csv(committed(*path.parts[:2]) / path.name))
         if names != old_names or new.shape != old.shape or not np.array_equal(new[:, 0], old[:, 0]):
             stale.append(str(path))
             continue
         largest = max(largest, float(np.max(np.abs(new - old) / (1 + np.abs(old)))))
         stale += [] if np.allclose(new, old, rtol=1e-12, atol=1e-12) else [str(path)]
-    report(f"ls_ref/ against a fresh run: largest difference {largest:.2g} (to 1 + |value|)")
+    report(f"the committed reference results against a fresh run: largest difference {largest:.2g} (to 1 + |value|)")
     assert not stale, f"run .venv/bin/python scripts/make_ls_ref.py: {stale} changed"
 
 
 @pytest.mark.parametrize("version,model", CASES)
 def test_manifest_names_the_experiment(version, model):
-    folder = ROOT / "ls_ref" / version / model
+    folder = committed(version, model)
     root = ET.parse(folder / "fmi-ls-manifest.xml").getroot()
     assert root.tag == "fmiReferences"
     assert root.get(LS + "fmi-ls-name") == "org.fmi-standard.fmi-ls-ref"
@@ -130,13 +138,11 @@ def test_ci_check_fails_on_a_moved_value_and_without_a_reference(tmp_path, repor
 
 @pytest.mark.parametrize("version,model", CASES)
 def test_dist_fmus_carry_ls_ref(version, model):
-    """Once CMake packages ls_ref/ (not yet: docs/cosimulation.md), the FMU's files are these."""
+    """The built FMU carries the model's committed files, byte for byte."""
     with zipfile.ZipFile(dist_fmu(version, model)) as archive:
         files = {n[len(FOLDER):]: archive.read(n) for n in archive.namelist()
                  if n.startswith(FOLDER) and not n.endswith("/")}
-    if not files:
-        pytest.skip("CMake does not package ls_ref/ into the FMUs yet")
-    folder = ROOT / "ls_ref" / version / model
+    folder = committed(version, model)
     assert files == {p.name: p.read_bytes() for p in folder.iterdir()}
 
 
