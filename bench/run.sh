@@ -88,17 +88,7 @@ machine() {
   fi
 }
 
-# Instructions per step of one loop: the difference between two run lengths, so that loading,
-# instantiation and the checks before timing cancel out. Arguments: the driver's command, with
-# STEPS where the step count goes.
-instructions_per_step() {
-  local small=10000 large=110000 a b
-  a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$small}" 2>&1 |
-      sed -n 's/.*Collected : //p')
-  b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$large}" 2>&1 |
-      sed -n 's/.*Collected : //p')
-  echo $(( (b - a) / (large - small) ))
-}
+source bench/instructions.sh # instructions_per_step
 
 # One table of instruction counts: a title, then "label|instructions" rows, the first the core
 # the others are divided by.
