@@ -231,7 +231,8 @@ int main(int argc, char **argv) {
         }
     }
     printf("AttitudePropagator, %ld steps of %g s, median of %d repeats (thread CPU time), loops\n"
-           "alternating; a loop reading theta is divided by the update + angles anchor (that by the bare):\n",
+           "alternating; a loop reading theta is divided by the update + angles anchor, the\n"
+           "other loops by the bare update:\n",
            steps, STEP_SIZE, repeats);
     printf("| loop | ns per step | / its anchor |\n|---|---:|---:|\n");
     for (int loop = 0; loop < n_loops; loop++) {

@@ -31,6 +31,7 @@
 #include "fmi2FunctionTypes.h"
 #include "fmi3FunctionTypes.h"
 #include "kinematics_123.h"
+#include "bench_anchor.h" /* after bench_inputs.h, bench_timing.h, kinematics_123.h */
 #include "kinematics_general.h"
 #include "sequences.h"
 
@@ -65,20 +66,12 @@ static double time_core(long n) {
     return elapsed / (double)n;
 }
 
-/* The anchor: the same loop over the hand-written 1-2-3 formula. */
+/* The anchor (bench_anchor.h). */
 static double time_k123(long n) {
-    double y[12], sum = 0.0;
-    int k = 0;
-    const double start = ak_bench_now_ns();
-    for (long step = 0; step < n; step++) {
-        const double *u = input_table[step & (TABLE_ROWS - 1)];
-        ak_angular_kinematics_123(u, u + 3, u + 6, y, y + 3, y + 6, y + 9);
-        sum += y[k];
-        k = k == 11 ? 0 : k + 1;
-    }
-    const double elapsed = ak_bench_now_ns() - start;
+    double sum;
+    const double ns = ak_bench_time_anchor(input_table, n, &sum);
     sink = sum;
-    return elapsed / (double)n;
+    return ns;
 }
 
 static void fmi2_log(fmi2ComponentEnvironment e, fmi2String n, fmi2Status s, fmi2String c,
@@ -183,7 +176,8 @@ static double run_loop(int loop, void *const libraries[N_LOOPS], long steps) {
 
 int main(int argc, char **argv) {
     if (argc < 3 || argc == 7) {
-        fprintf(stderr, "usage: bench_fmi3 FMI2_SO FMI3_SO [STEPS [REPEATS [LOOP [PREV2_SO PREV3_SO]]]]\n");
+        fprintf(stderr, "usage: bench_fmi3 FMI2_SO FMI3_SO "
+                        "[STEPS [REPEATS [LOOP [PREV2_SO PREV3_SO]]]]\n");
         return 2;
     }
     const long steps = argc > 3 ? (long)atof(argv[3]) : 1000000;

@@ -29,10 +29,12 @@ measure() {
 if [ "${1:-}" = --record ]; then
   previous=$(bash bench/previous_release.sh)
   {
-    echo "# Callgrind instructions per cycle of the previous release ($(head -1 \
-      bench/previous_release.txt), bench/previous_release.txt) through the current drivers:"
+    echo "# Callgrind instructions per cycle of the previous release, $(head -1 \
+      bench/previous_release.txt) (bench/previous_release.txt),"
+    echo "# through the current drivers:"
     echo "# AngularKinematics body123 set 9 + doStep + get 12 (FMI 3: 3 sets, get of 4 arrays);"
-    echo "# AttitudePropagator set omega + doStep + get q, theta. Written by bash bench/guard.sh --record."
+    echo "# AttitudePropagator set omega + doStep + get q, theta."
+    echo "# Written by bash bench/guard.sh --record."
     echo "# model FMI-version instructions"
     measure "$previous/build"
   } >"$record"
@@ -54,5 +56,6 @@ while read -r model version count; do
   echo "guard: $model FMI $version: $count instructions, previous release $recorded, $verdict"
   case "$verdict" in *FAILED) status=1 ;; esac
 done < <(measure build)
-[ "$status" -eq 0 ] || echo "guard: FAILED: a cycle costs more than $limit_percent % over the previous release"
+[ "$status" -eq 0 ] ||
+  echo "guard: FAILED: a cycle costs more than $limit_percent % over the previous release"
 exit "$status"
