@@ -9,6 +9,7 @@
  *     fmi3DoStep, one fmi3GetFloat64 of the four output arrays omega_fixed .. alpha_body
  *     (build/fmu3/binaries/x86_64-linux/AngularKinematics.so);
  *   - with PREV2_SO and PREV3_SO: the same two cycles of the previous release's binaries.
+ * Given EulerRates.so files, the cycles are EulerRates' (the same value references).
  * Inputs cycle through the table of bench/bench_inputs.h (that of bench_fmu.c), so every step
  * evaluates. CPU time of the thread;
  * medians over the repeats, the ratios are medians of the per-repeat ratios.
@@ -26,6 +27,7 @@
 #include <time.h>
 
 #include "AngularKinematics_variables.h" /* KIN_GUID, generated */
+#include "EulerRates_variables.h"        /* ER_GUID */
 #include "bench_inputs.h"
 #include "bench_timing.h"
 #include "fmi2FunctionTypes.h"
@@ -39,6 +41,11 @@ enum { TABLE_ROWS = AK_BENCH_ROWS, MAX_REPEATS = 51 };
 static double input_table[TABLE_ROWS][AK_BENCH_INPUTS];
 static volatile double sink;
 
+
+/* The model of the .so files: an FMU's binary is named after its model identifier. EulerRates has
+ * AngularKinematics' value references for the same roles (3 input arrays at 0, 3, 6; 4 output
+ * arrays at 9, 12, 15, 18), so the same loops run it (bench/guard.sh). */
+static const char *guid = KIN_GUID;
 
 static void *symbol(void *library, const char *name) {
     void *s = dlsym(library, name);
@@ -83,7 +90,7 @@ static void fmi2_log(fmi2ComponentEnvironment e, fmi2String n, fmi2Status s, fmi
 static double time_fmi2(void *library, long n) {
     fmi2CallbackFunctions callbacks = {fmi2_log, calloc, free, NULL, NULL};
     fmi2Component c = FUNCTION(fmi2InstantiateTYPE, library, "fmi2Instantiate")(
-        "bench", fmi2CoSimulation, KIN_GUID, "", &callbacks, fmi2False, fmi2False);
+        "bench", fmi2CoSimulation, guid, "", &callbacks, fmi2False, fmi2False);
     fmi2SetRealTYPE *set = FUNCTION(fmi2SetRealTYPE, library, "fmi2SetReal");
     fmi2GetRealTYPE *get = FUNCTION(fmi2GetRealTYPE, library, "fmi2GetReal");
     fmi2DoStepTYPE *step_fn = FUNCTION(fmi2DoStepTYPE, library, "fmi2DoStep");
@@ -119,7 +126,7 @@ static void fmi3_log(fmi3InstanceEnvironment e, fmi3Status s, fmi3String c, fmi3
 
 static double time_fmi3(void *library, long n) {
     fmi3Instance c = FUNCTION(fmi3InstantiateCoSimulationTYPE, library, "fmi3InstantiateCoSimulation")(
-        "bench", KIN_GUID, NULL, fmi3False, fmi3False, fmi3False, fmi3False, NULL, 0, NULL, fmi3_log, NULL);
+        "bench", guid, NULL, fmi3False, fmi3False, fmi3False, fmi3False, NULL, 0, NULL, fmi3_log, NULL);
     fmi3SetFloat64TYPE *set = FUNCTION(fmi3SetFloat64TYPE, library, "fmi3SetFloat64");
     fmi3GetFloat64TYPE *get = FUNCTION(fmi3GetFloat64TYPE, library, "fmi3GetFloat64");
     fmi3DoStepTYPE *step_fn = FUNCTION(fmi3DoStepTYPE, library, "fmi3DoStep");
@@ -184,6 +191,8 @@ int main(int argc, char **argv) {
     int repeats = argc > 4 ? atoi(argv[4]) : 7;
     repeats = repeats < 1 ? 1 : repeats > MAX_REPEATS ? MAX_REPEATS : repeats;
     const int n_loops = argc > 7 ? N_LOOPS : PREV2;
+    const char *model = strstr(argv[1], "EulerRates") != NULL ? "EulerRates" : "AngularKinematics";
+    guid = strcmp(model, "EulerRates") == 0 ? ER_GUID : KIN_GUID;
     void *libraries[N_LOOPS] = {NULL, NULL, load(argv[1]), load(argv[2]),
                                 argc > 7 ? load(argv[6]) : NULL, argc > 7 ? load(argv[7]) : NULL};
     if (ak_bench_fill_inputs(input_table) != 0) {
@@ -218,8 +227,8 @@ int main(int argc, char **argv) {
         "FMI 2 cycle: fmi2SetReal of 9, fmi2DoStep, fmi2GetReal of 12",
         "FMI 3 cycle: 3 fmi3SetFloat64 of 3, fmi3DoStep, 1 fmi3GetFloat64 of 4 arrays",
         "previous release: FMI 2 cycle", "previous release: FMI 3 cycle"};
-    printf("AngularKinematics body123, timed alternately; %ld steps per run, %d repeats, medians;\n"
-           "ratios are medians of the per-repeat ratios to the anchor:\n\n", steps, repeats);
+    printf("%s body123, timed alternately; %ld steps per run, %d repeats, medians;\n"
+           "ratios are medians of the per-repeat ratios to the anchor:\n\n", model, steps, repeats);
     printf("| loop | ns/step | / anchor |\n|---|---:|---:|\n");
     for (int loop = 0; loop < n_loops; loop++) {
         printf("| %s | %.1f | %.3f |\n", LABELS[loop], ak_bench_median(ns[loop], repeats),

@@ -22,6 +22,9 @@ measure() {
   local kin=(build/bench/bench_fmi3 "$fmi2/AngularKinematics.so" "$fmi3/AngularKinematics.so")
   echo "AngularKinematics 2 $(instructions_per_step "${kin[@]}" STEPS 1 fmi2)"
   echo "AngularKinematics 3 $(instructions_per_step "${kin[@]}" STEPS 1 fmi3)"
+  local euler=(build/bench/bench_fmi3 "$fmi2/EulerRates.so" "$fmi3/EulerRates.so")
+  echo "EulerRates 2 $(instructions_per_step "${euler[@]}" STEPS 1 fmi2)"
+  echo "EulerRates 3 $(instructions_per_step "${euler[@]}" STEPS 1 fmi3)"
   echo "AttitudePropagator 2 $(instructions_per_step build/bench/bench_attitude \
     "$fmi2/AttitudePropagator.so" --steps STEPS --only q+theta)"
 }
@@ -32,7 +35,8 @@ if [ "${1:-}" = --record ]; then
     echo "# Callgrind instructions per cycle of the previous release, $(head -1 \
       bench/previous_release.txt) (bench/previous_release.txt),"
     echo "# through the current drivers:"
-    echo "# AngularKinematics body123 set 9 + doStep + get 12 (FMI 3: 3 sets, get of 4 arrays);"
+    echo "# AngularKinematics body123 and EulerRates: set 9 + doStep + get 12 (FMI 3: 3 sets of 3,"
+    echo "# one get of 4 arrays);"
     echo "# AttitudePropagator set omega + doStep + get q, theta."
     echo "# Written by bash bench/guard.sh --record."
     echo "# model FMI-version instructions"
