@@ -1,18 +1,22 @@
-/* The FMI 3 cycle beside the FMI 2 cycle and the bare core (issue 12), timed alternately in one
- * run, repeat after repeat, so that all three see the same machine load:
- *   - core: ak_general_angular_kinematics (body123) on the inputs of the step;
+/* The FMI 3 cycle beside the FMI 2 cycle, the anchor and the general core (issues 12, 24), timed
+ * alternately in one run, repeat after repeat, so that all see the same machine load:
+ *   - anchor: the hand-written 1-2-3 formula, ak_angular_kinematics_123 (tests/c/kinematics_123.c,
+ *     the project's test reference), the physical limit of the main use; every ratio is to it;
+ *   - core: ak_general_angular_kinematics (body123), a figure of its own (it moves with the code);
  *   - FMI 2 cycle: fmi2SetReal of the 9 inputs, fmi2DoStep, fmi2GetReal of the 12 outputs
  *     omega_fixed .. alpha_body (build/fmu/binaries/linux64/AngularKinematics.so);
  *   - FMI 3 cycle: three fmi3SetFloat64, one per input array (theta, theta_dot, theta_ddot),
  *     fmi3DoStep, one fmi3GetFloat64 of the four output arrays omega_fixed .. alpha_body
- *     (build/fmu3/binaries/x86_64-linux/AngularKinematics.so).
+ *     (build/fmu3/binaries/x86_64-linux/AngularKinematics.so);
+ *   - with PREV2_SO and PREV3_SO: the same two cycles of the previous release's binaries.
+ * Given EulerRates.so files, the cycles are EulerRates' (the same value references).
  * Inputs cycle through the table of bench/bench_inputs.h (that of bench_fmu.c), so every step
  * evaluates. CPU time of the thread;
  * medians over the repeats, the ratios are medians of the per-repeat ratios.
  *
- * Usage: bench_fmi3 FMI2_SO FMI3_SO [STEPS [REPEATS [core|fmi2|fmi3]]]   (bench/run.sh passes
- * the build's). With a loop named, only that loop runs, once: bench/run.sh counts its
- * instructions under callgrind. */
+ * Usage: bench_fmi3 FMI2_SO FMI3_SO [STEPS [REPEATS [k123|core|fmi2|fmi3|all [PREV2_SO PREV3_SO]]]]
+ * (bench/run.sh passes the build's). With a loop named, only that loop runs, once: bench/run.sh
+ * and bench/guard.sh count its instructions under callgrind. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, dlopen */
 
 #include <dlfcn.h>
@@ -23,10 +27,13 @@
 #include <time.h>
 
 #include "AngularKinematics_variables.h" /* KIN_GUID, generated */
+#include "EulerRates_variables.h"        /* ER_GUID */
 #include "bench_inputs.h"
 #include "bench_timing.h"
 #include "fmi2FunctionTypes.h"
 #include "fmi3FunctionTypes.h"
+#include "kinematics_123.h"
+#include "bench_anchor.h" /* after bench_inputs.h, bench_timing.h, kinematics_123.h */
 #include "kinematics_general.h"
 #include "sequences.h"
 
@@ -34,6 +41,11 @@ enum { TABLE_ROWS = AK_BENCH_ROWS, MAX_REPEATS = 51 };
 static double input_table[TABLE_ROWS][AK_BENCH_INPUTS];
 static volatile double sink;
 
+
+/* The model of the .so files: an FMU's binary is named after its model identifier. EulerRates has
+ * AngularKinematics' value references for the same roles (3 input arrays at 0, 3, 6; 4 output
+ * arrays at 9, 12, 15, 18), so the same loops run it (bench/guard.sh). */
+static const char *guid = KIN_GUID;
 
 static void *symbol(void *library, const char *name) {
     void *s = dlsym(library, name);
@@ -61,6 +73,14 @@ static double time_core(long n) {
     return elapsed / (double)n;
 }
 
+/* The anchor (bench_anchor.h). */
+static double time_k123(long n) {
+    double sum;
+    const double ns = ak_bench_time_anchor(input_table, n, &sum);
+    sink = sum;
+    return ns;
+}
+
 static void fmi2_log(fmi2ComponentEnvironment e, fmi2String n, fmi2Status s, fmi2String c,
                      fmi2String m, ...) {
     (void)e, (void)n, (void)s, (void)c;
@@ -70,7 +90,7 @@ static void fmi2_log(fmi2ComponentEnvironment e, fmi2String n, fmi2Status s, fmi
 static double time_fmi2(void *library, long n) {
     fmi2CallbackFunctions callbacks = {fmi2_log, calloc, free, NULL, NULL};
     fmi2Component c = FUNCTION(fmi2InstantiateTYPE, library, "fmi2Instantiate")(
-        "bench", fmi2CoSimulation, KIN_GUID, "", &callbacks, fmi2False, fmi2False);
+        "bench", fmi2CoSimulation, guid, "", &callbacks, fmi2False, fmi2False);
     fmi2SetRealTYPE *set = FUNCTION(fmi2SetRealTYPE, library, "fmi2SetReal");
     fmi2GetRealTYPE *get = FUNCTION(fmi2GetRealTYPE, library, "fmi2GetReal");
     fmi2DoStepTYPE *step_fn = FUNCTION(fmi2DoStepTYPE, library, "fmi2DoStep");
@@ -106,7 +126,7 @@ static void fmi3_log(fmi3InstanceEnvironment e, fmi3Status s, fmi3String c, fmi3
 
 static double time_fmi3(void *library, long n) {
     fmi3Instance c = FUNCTION(fmi3InstantiateCoSimulationTYPE, library, "fmi3InstantiateCoSimulation")(
-        "bench", KIN_GUID, NULL, fmi3False, fmi3False, fmi3False, fmi3False, NULL, 0, NULL, fmi3_log, NULL);
+        "bench", guid, NULL, fmi3False, fmi3False, fmi3False, fmi3False, NULL, 0, NULL, fmi3_log, NULL);
     fmi3SetFloat64TYPE *set = FUNCTION(fmi3SetFloat64TYPE, library, "fmi3SetFloat64");
     fmi3GetFloat64TYPE *get = FUNCTION(fmi3GetFloat64TYPE, library, "fmi3GetFloat64");
     fmi3DoStepTYPE *step_fn = FUNCTION(fmi3DoStepTYPE, library, "fmi3DoStep");
@@ -139,53 +159,85 @@ static double time_fmi3(void *library, long n) {
     return elapsed / (double)n;
 }
 
+static void *load(const char *path) {
+    void *library = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (library == NULL) {
+        fprintf(stderr, "bench_fmi3: %s\n", dlerror());
+        exit(1);
+    }
+    return library;
+}
+
+enum { K123, CORE, FMI2, FMI3, PREV2, PREV3, N_LOOPS };
+static const char *const LOOP_NAMES[N_LOOPS] = {"k123", "core", "fmi2", "fmi3", "prev2", "prev3"};
+
+/* One run of loop `loop` over `steps` steps: ns per step. */
+static double run_loop(int loop, void *const libraries[N_LOOPS], long steps) {
+    switch (loop) {
+    case K123: return time_k123(steps);
+    case CORE: return time_core(steps);
+    case FMI2: case PREV2: return time_fmi2(libraries[loop], steps);
+    default: return time_fmi3(libraries[loop], steps);
+    }
+}
+
 int main(int argc, char **argv) {
-    if (argc < 3) {
-        fprintf(stderr, "usage: bench_fmi3 FMI2_SO FMI3_SO [STEPS [REPEATS]]\n");
+    if (argc < 3 || argc == 7) {
+        fprintf(stderr, "usage: bench_fmi3 FMI2_SO FMI3_SO "
+                        "[STEPS [REPEATS [LOOP [PREV2_SO PREV3_SO]]]]\n");
         return 2;
     }
     const long steps = argc > 3 ? (long)atof(argv[3]) : 1000000;
     int repeats = argc > 4 ? atoi(argv[4]) : 7;
     repeats = repeats < 1 ? 1 : repeats > MAX_REPEATS ? MAX_REPEATS : repeats;
-    void *fmi2 = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
-    void *fmi3 = dlopen(argv[2], RTLD_NOW | RTLD_LOCAL);
-    if (fmi2 == NULL || fmi3 == NULL) {
-        fprintf(stderr, "bench_fmi3: %s\n", dlerror());
-        return 1;
-    }
+    const int n_loops = argc > 7 ? N_LOOPS : PREV2;
+    const char *model = strstr(argv[1], "EulerRates") != NULL ? "EulerRates" : "AngularKinematics";
+    guid = strcmp(model, "EulerRates") == 0 ? ER_GUID : KIN_GUID;
+    void *libraries[N_LOOPS] = {NULL, NULL, load(argv[1]), load(argv[2]),
+                                argc > 7 ? load(argv[6]) : NULL, argc > 7 ? load(argv[7]) : NULL};
     if (ak_bench_fill_inputs(input_table) != 0) {
         fprintf(stderr, "bench_fmi3: the input table has equal consecutive values\n");
         return 1;
     }
-    if (argc > 5) { /* one loop alone */
-        const char *only = argv[5];
-        const double ns = strcmp(only, "core") == 0   ? time_core(steps)
-                          : strcmp(only, "fmi2") == 0 ? time_fmi2(fmi2, steps)
-                          : strcmp(only, "fmi3") == 0 ? time_fmi3(fmi3, steps)
-                                                      : -1.0;
-        if (ns < 0.0) {
-            fprintf(stderr, "bench_fmi3: unknown loop %s (core, fmi2 or fmi3)\n", only);
-            return 2;
+    if (argc > 5 && strcmp(argv[5], "all") != 0) { /* one loop alone */
+        for (int loop = 0; loop < PREV2; loop++) {
+            if (strcmp(argv[5], LOOP_NAMES[loop]) == 0) {
+                printf("%s: %.1f ns/step\n", argv[5], run_loop(loop, libraries, steps));
+                return 0;
+            }
         }
-        printf("%s: %.1f ns/step\n", only, ns);
-        return 0;
+        fprintf(stderr, "bench_fmi3: unknown loop %s (k123, core, fmi2, fmi3 or all)\n", argv[5]);
+        return 2;
     }
-    double core[MAX_REPEATS], c2[MAX_REPEATS], c3[MAX_REPEATS], r2[MAX_REPEATS], r3[MAX_REPEATS];
-    time_core(steps / 10); /* warm-up */
+    double ns[N_LOOPS][MAX_REPEATS], ratio[N_LOOPS][MAX_REPEATS], fmi3_to_fmi2[2][MAX_REPEATS];
+    time_k123(steps / 10); /* warm-up */
     for (int r = 0; r < repeats; r++) {
-        core[r] = time_core(steps);
-        c2[r] = time_fmi2(fmi2, steps);
-        c3[r] = time_fmi3(fmi3, steps);
-        r2[r] = c2[r] / core[r];
-        r3[r] = c3[r] / core[r];
+        for (int loop = 0; loop < n_loops; loop++) {
+            ns[loop][r] = run_loop(loop, libraries, steps);
+        }
+        for (int loop = 0; loop < n_loops; loop++) {
+            ratio[loop][r] = ns[loop][r] / ns[K123][r];
+        }
+        fmi3_to_fmi2[0][r] = ns[FMI3][r] / ns[FMI2][r];
+        fmi3_to_fmi2[1][r] = n_loops > PREV2 ? ns[PREV3][r] / ns[PREV2][r] : 0.0;
     }
-    printf("FMI 3 cycle (3 fmi3SetFloat64 of the input arrays, fmi3DoStep, 1 fmi3GetFloat64 of the\n"
-           "4 output arrays) and FMI 2 cycle (fmi2SetReal of 9, fmi2DoStep, fmi2GetReal of 12) vs. the\n"
-           "bare core (body123), timed alternately; %ld steps per run, %d repeats, medians:\n\n",
-           steps, repeats);
-    printf("| core ns/step | FMI 2 cycle ns/step | FMI 3 cycle ns/step | FMI 2 / core | FMI 3 / core |\n");
-    printf("|---|---|---|---|---|\n");
-    printf("| %.1f | %.1f | %.1f | %.3f | %.3f |\n", ak_bench_median(core, repeats), ak_bench_median(c2, repeats),
-           ak_bench_median(c3, repeats), ak_bench_median(r2, repeats), ak_bench_median(r3, repeats));
+    static const char *const LABELS[N_LOOPS] = {
+        "anchor: hand-written 1-2-3 formula (tests/c/kinematics_123.c)",
+        "general core, body123 (ak_general_angular_kinematics)",
+        "FMI 2 cycle: fmi2SetReal of 9, fmi2DoStep, fmi2GetReal of 12",
+        "FMI 3 cycle: 3 fmi3SetFloat64 of 3, fmi3DoStep, 1 fmi3GetFloat64 of 4 arrays",
+        "previous release: FMI 2 cycle", "previous release: FMI 3 cycle"};
+    printf("%s body123, timed alternately; %ld steps per run, %d repeats, medians;\n"
+           "ratios are medians of the per-repeat ratios to the anchor:\n\n", model, steps, repeats);
+    printf("| loop | ns/step | / anchor |\n|---|---:|---:|\n");
+    for (int loop = 0; loop < n_loops; loop++) {
+        printf("| %s | %.1f | %.3f |\n", LABELS[loop], ak_bench_median(ns[loop], repeats),
+               ak_bench_median(ratio[loop], repeats));
+    }
+    printf("\nFMI 3 cycle / FMI 2 cycle: %.3f", ak_bench_median(fmi3_to_fmi2[0], repeats));
+    if (n_loops > PREV2) {
+        printf(" (previous release: %.3f)", ak_bench_median(fmi3_to_fmi2[1], repeats));
+    }
+    printf("\n");
     return 0;
 }

@@ -3,7 +3,9 @@
  *
  * It loads the built AngularKinematics.so with dlopen, as a master does, and in the same run
  * times
- *   - the bare core, ak_general_angular_kinematics for body123 (the FMU's default sequence),
+ *   - the anchor every ratio is to: the hand-written 1-2-3 formula (bench_anchor.h, issue 24);
+ *   - the general core (a figure of its own), ak_general_angular_kinematics for body123 (the
+ *     FMU's default sequence),
  *     linked from the same static library (same compiler, same flags) that the FMU is built from;
  *   - the full cycle of one communication point: fmi2SetReal of the 9 inputs, fmi2DoStep,
  *     fmi2GetReal of the 12 outputs; the same cycle getting all outputs (what fmpy's
@@ -39,6 +41,8 @@
 #include "bench_inputs.h"
 #include "bench_timing.h"
 #include "kinematics_general.h"
+#include "kinematics_123.h"
+#include "bench_anchor.h" /* after bench_inputs.h, bench_timing.h, kinematics_123.h */
 
 
 enum { N_INPUTS = AK_BENCH_INPUTS, N_OUTPUTS = 12, TABLE_ROWS = AK_BENCH_ROWS };
@@ -218,7 +222,15 @@ static void fill_input_table(void) {
 static volatile double sink;
 
 
-/* The bare core on the inputs of steps 0..n-1: ns per evaluation. */
+/* The anchor, the hand-written 1-2-3 formula (bench_anchor.h): every ratio is to it. */
+static double time_anchor(long n) {
+    double sum;
+    const double ns = ak_bench_time_anchor(input_table, n, &sum);
+    sink = sum;
+    return ns;
+}
+
+/* The general core on the inputs of steps 0..n-1, a figure of its own: ns per evaluation. */
 static double time_core(long n) {
     double outputs[N_OUTPUTS];
     double sum = 0.0;
@@ -402,7 +414,7 @@ typedef struct {
 static void usage(void) {
     fprintf(stderr,
             "usage: bench_fmu FMU_SO [--steps N[,N...]] [--repeats R] [--calls N]\n"
-            "                        [--only core|cycle|all|lazy|get --steps N]\n"
+            "                        [--only anchor|core|cycle|all|lazy|get --steps N]\n"
             "  FMU_SO     the AngularKinematics.so of a Release build\n"
             "  --steps    step counts of the cycle-vs-core runs (default 1e3,1e4,1e5,1e6,1e7)\n"
             "  --repeats  repeats per figure, median quoted (default 5)\n"
@@ -466,14 +478,15 @@ static const char *const INPUT_NAMES[N_INPUTS] = {
 static void run_scaling(fmu_api *api, const options *o) {
     printf("Full cycles: fmi2SetReal of 9 inputs, fmi2DoStep, then fmi2GetReal of the 12 omega/alpha\n"
            "outputs (cycle), of all %d outputs (all), or of R[1,1] alone (one lazy output).\n"
-           "Each is compared with the same bare core, ak_general_angular_kinematics for body123 (the\n"
-           "12 omega/alpha outputs); the four loops run alternately in each repeat; ns are medians of\n"
+           "Each is compared with the anchor, the hand-written 1-2-3 formula (tests/c/kinematics_123.c,\n"
+           "the 12 omega/alpha outputs); the general core (ak_general_angular_kinematics, body123) is\n"
+           "a figure of its own; the five loops run alternately in each repeat; ns are medians of\n"
            "the repeats, each ratio the median of the per-repeat ratios:\n\n",
            (int)KIN_N_OUTPUTS);
-    printf("| steps per run | repeats | core ns/step | cycle ns/step | cycle / core | "
-           "all ns | all / core | one lazy ns | one lazy / core | "
+    printf("| steps per run | repeats | anchor ns/step | general core ns | cycle ns/step | "
+           "cycle / anchor | all ns | all / anchor | one lazy ns | one lazy / anchor | "
            "max RSS KiB | FMU allocations per run |\n");
-    printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int s = 0; s < o->n_sizes; s++) {
         const long n = o->sizes[s];
         /* Short runs are repeated more, so that every row rests on at least 1e6 steps. */
@@ -481,14 +494,15 @@ static void run_scaling(fmu_api *api, const options *o) {
         while (repeats < MAX_REPEATS && (long)repeats * n < 1000000) {
             repeats += 2;
         }
-        double core[MAX_REPEATS], cycle[MAX_REPEATS], ratios[MAX_REPEATS];
+        double core[MAX_REPEATS], general[MAX_REPEATS], cycle[MAX_REPEATS], ratios[MAX_REPEATS];
         double all[MAX_REPEATS], all_ratios[MAX_REPEATS], lazy[MAX_REPEATS];
         double lazy_ratios[MAX_REPEATS];
         unsigned long allocations_per_run = 0;
-        time_core(n < 1000 ? n : 1000); /* warm-up */
+        time_anchor(n < 1000 ? n : 1000); /* warm-up */
         for (int r = 0; r < repeats; r++) {
             /* Interleaved, so that a slow moment of the shared machine hits all alike. */
-            core[r] = time_core(n);
+            core[r] = time_anchor(n);
+            general[r] = time_core(n);
             const unsigned long before = allocations;
             cycle[r] = time_cycle(api, OUTPUT_VRS, N_OUTPUTS, n);
             allocations_per_run = allocations - before;
@@ -498,8 +512,9 @@ static void run_scaling(fmu_api *api, const options *o) {
             all_ratios[r] = all[r] / core[r];
             lazy_ratios[r] = lazy[r] / core[r];
         }
-        printf("| %ld | %d | %.1f | %.1f | %.2f | %.1f | %.2f | %.1f | %.2f | %ld | %lu |\n", n,
-               repeats, ak_bench_median(core, repeats), ak_bench_median(cycle, repeats), ak_bench_median(ratios, repeats),
+        printf("| %ld | %d | %.1f | %.1f | %.1f | %.2f | %.1f | %.2f | %.1f | %.2f | %ld | %lu |\n",
+               n, repeats, ak_bench_median(core, repeats), ak_bench_median(general, repeats),
+               ak_bench_median(cycle, repeats), ak_bench_median(ratios, repeats),
                ak_bench_median(all, repeats), ak_bench_median(all_ratios, repeats), ak_bench_median(lazy, repeats),
                ak_bench_median(lazy_ratios, repeats), max_rss_kib(), allocations_per_run);
         fflush(stdout);
@@ -518,7 +533,7 @@ static void run_calls(fmu_api *api, const options *o) {
     double pair[N_INPUTS][MAX_REPEATS], pair_ratio[N_INPUTS][MAX_REPEATS];
     /* Each repeat times every loop once, so that all of them see the machine alike. */
     for (int r = 0; r < repeats; r++) {
-        core[r] = time_core(o->calls);
+        core[r] = time_anchor(o->calls);
         single[GET][r] = time_get_unchanged(api, OUTPUT_VRS, o->calls);
         single[GET_REVERSED][r] = time_get_unchanged(api, OUTPUT_VRS_REVERSED, o->calls);
         single[SET][r] = time_set_only(api, o->calls);
@@ -532,11 +547,11 @@ static void run_calls(fmu_api *api, const options *o) {
         }
     }
     printf("\nSingle calls, %ld per repeat, %d repeats (median, each repeat times all loops in\n"
-           "turn; / core is the median of the per-repeat ratios). After the get loop the FMU's\n"
+           "turn; / anchor is the median of the per-repeat ratios). After the get loop the FMU's\n"
            "evaluation count is checked unchanged:\n\n",
            o->calls, repeats);
-    printf("| call | ns/call | / core |\n|---|---:|---:|\n");
-    printf("| bare core (for scale) | %.1f | 1.00 |\n", ak_bench_median(core, repeats));
+    printf("| call | ns/call | / anchor |\n|---|---:|---:|\n");
+    printf("| anchor: hand-written 1-2-3 formula | %.1f | 1.00 |\n", ak_bench_median(core, repeats));
     print_row("fmi2GetReal of 12 outputs, no input changed", single[GET], single_ratio[GET],
               repeats);
     print_row("same, outputs asked in reverse order", single[GET_REVERSED],
@@ -547,7 +562,7 @@ static void run_calls(fmu_api *api, const options *o) {
 
     printf("\nfmi2SetReal of ONE input to a new value, then fmi2GetReal of the 12 outputs (one\n"
            "evaluation each, checked by count), same repeats:\n\n");
-    printf("| input changed | set + get ns | / core |\n|---|---:|---:|\n");
+    printf("| input changed | set + get ns | / anchor |\n|---|---:|---:|\n");
     for (int input = 0; input < N_INPUTS; input++) {
         print_row(INPUT_NAMES[input], pair[input], pair_ratio[input], repeats);
     }
@@ -569,7 +584,9 @@ int main(int argc, char **argv) {
     check_fmu(&api);
 
     if (o.only != NULL) {
-        if (strcmp(o.only, "core") == 0) {
+        if (strcmp(o.only, "anchor") == 0) {
+            time_anchor(o.sizes[0]);
+        } else if (strcmp(o.only, "core") == 0) {
             time_core(o.sizes[0]);
         } else if (strcmp(o.only, "cycle") == 0) {
             time_cycle(&api, OUTPUT_VRS, N_OUTPUTS, o.sizes[0]);

@@ -8,14 +8,20 @@
 #      timings are noisy);
 #   3. the fmpy comparison (bench/fmpy_bench.py): simulate_fmu with AngularKinematics vs. the
 #      pass-through FMU;
-#   4. AttitudePropagator (bench/bench_attitude.c): set omega + fmi2DoStep + get q and theta vs.
-#      the bare quaternion update, over the largest step count of --steps.
+#   4. AttitudePropagator (bench/bench_attitude.c): set omega + fmi2DoStep + get q (and theta)
+#      vs. the bare quaternion update (and the update + angle extraction), over the largest step
+#      count of --steps.
+# The anchors every ratio is to do not move with the FMU (issue 24): the hand-written 1-2-3
+# formula (tests/c/kinematics_123.c) and the bare quaternion update; the general core is a figure
+# of its own. Unless --quick or --no-previous, the previous release's binaries
+# (bench/previous_release.sh, a scratch worktree) are timed alternately with the current build.
 # It asserts no timing; it fails only if something does not run or the FMU evaluates when it
 # should not (the driver counts the evaluations through the logCalls trace).
 #
 # Usage: bash bench/run.sh [--quick] [--steps LIST] [--repeats R] [--calls N]
-#                          [--fmpy-steps N] [--fmpy-repeats R] [--no-callgrind]
-#   --quick          a bounded run for CI (well under 30 s): small counts, no callgrind
+#                          [--fmpy-steps N] [--fmpy-repeats R] [--no-callgrind] [--no-previous]
+#   --quick          a bounded run for CI (well under 30 s): small counts, no callgrind, no
+#                    previous release
 #   --steps LIST     step counts of the scaling runs (default 1e3,1e4,1e5,1e6,1e7)
 #   --repeats R      repeats per figure of the driver, median quoted (default 5)
 #   --calls N        iterations of the driver's single-call loops (default 1e6)
@@ -32,17 +38,19 @@ calls=1e6
 fmpy_steps=100000
 fmpy_repeats=5
 callgrind=yes
+previous=yes
 fmi3_steps=1e6 # per run of bench/bench_fmi3.c (--quick: 1e5)
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) steps=1e3,1e4,1e5; repeats=3; calls=1e5; fmpy_steps=2000; fmpy_repeats=3
-             callgrind=no; fmi3_steps=1e5 ;;
+             callgrind=no; fmi3_steps=1e5; previous=no ;;
     --steps) steps="$2"; shift ;;
     --repeats) repeats="$2"; shift ;;
     --calls) calls="$2"; shift ;;
     --fmpy-steps) fmpy_steps="$2"; shift ;;
     --fmpy-repeats) fmpy_repeats="$2"; shift ;;
     --no-callgrind) callgrind=no ;;
+    --no-previous) previous=no ;;
     *) echo "bench/run.sh: unknown option $1 (see the header of bench/run.sh)" >&2; exit 2 ;;
   esac
   shift
@@ -57,6 +65,14 @@ fi
 fmu_so=build/fmu/binaries/linux64/AngularKinematics.so
 fmu3_so=build/fmu3/binaries/x86_64-linux/AngularKinematics.so
 driver=build/bench/bench_fmu
+ap_so=build/fmu/binaries/linux64/AttitudePropagator.so
+previous_fmi3=() previous_ap=()
+if [ "$previous" = yes ]; then
+  previous_build=$(bash bench/previous_release.sh)/build
+  previous_fmi3=("$previous_build/fmu/binaries/linux64/AngularKinematics.so"
+                 "$previous_build/fmu3/binaries/x86_64-linux/AngularKinematics.so")
+  previous_ap=(--previous "$previous_build/fmu/binaries/linux64/AttitudePropagator.so")
+fi
 
 # The calls in one function of a binary, counted: "sincos@plt x3, ...".
 calls_in() {
@@ -88,26 +104,16 @@ machine() {
   fi
 }
 
-# Instructions per step of one loop: the difference between two run lengths, so that loading,
-# instantiation and the checks before timing cancel out. Arguments: the driver's command, with
-# STEPS where the step count goes.
-instructions_per_step() {
-  local small=10000 large=110000 a b
-  a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$small}" 2>&1 |
-      sed -n 's/.*Collected : //p')
-  b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$large}" 2>&1 |
-      sed -n 's/.*Collected : //p')
-  echo $(( (b - a) / (large - small) ))
-}
+source bench/instructions.sh # instructions_per_step
 
-# One table of instruction counts: a title, then "label|instructions" rows, the first the core
+# One table of instruction counts: a title, then "label|instructions" rows, the first the anchor
 # the others are divided by.
 instruction_table() {
   local title=$1 core=${2#*|}
   shift
   echo "$title"
   echo
-  echo "| loop | instructions per step | / core |"
+  echo "| loop | instructions per step | / anchor |"
   echo "|---|---:|---:|"
   for row in "$@"; do
     awk -v l="${row%|*}" -v c="${row#*|}" -v k="$core" \
@@ -117,20 +123,38 @@ instruction_table() {
 
 callgrind_table() {
   local fmu=("$driver" "$fmu_so") fmi3=(build/bench/bench_fmi3 "$fmu_so" "$fmu3_so")
+  local ap=(build/bench/bench_attitude "$ap_so" --steps STEPS --only)
   instruction_table \
     "Instructions per step under valgrind --tool=callgrind (exact, independent of machine load):" \
-    "bare core|$(instructions_per_step "${fmu[@]}" --only core --steps STEPS)" \
+    "anchor: hand-written 1-2-3 formula|$(instructions_per_step "${fmu[@]}" --only anchor \
+      --steps STEPS)" \
+    "general core, body123|$(instructions_per_step "${fmu[@]}" --only core --steps STEPS)" \
     "set 9 + doStep + get 12|$(instructions_per_step "${fmu[@]}" --only cycle --steps STEPS)" \
     "set 9 + doStep + get all outputs|$(instructions_per_step "${fmu[@]}" --only all --steps STEPS)" \
     "set 9 + doStep + get R[1,1]|$(instructions_per_step "${fmu[@]}" --only lazy --steps STEPS)" \
     "get 12, no input changed|$(instructions_per_step "${fmu[@]}" --only get --steps STEPS)"
   echo
-  # bench_fmi3's bare core is inlined into its loop (fewer instructions than bench_fmu's, which
-  # calls it), so its ratios are the stricter ones.
-  instruction_table "bench_fmi3's loops (its bare core inlined into the loop):" \
-    "bare core, inlined|$(instructions_per_step "${fmi3[@]}" STEPS 1 core)" \
-    "FMI 2: set 9 + doStep + get 12|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi2)" \
-    "FMI 3: 3 sets of 3 + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi3)"
+  local rows=("FMI 2: set 9 + doStep + get 12|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi2)"
+    "FMI 3: 3 sets of 3 + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi3)")
+  if [ ${#previous_fmi3[@]} -gt 0 ]; then
+    local old=(build/bench/bench_fmi3 "${previous_fmi3[@]}")
+    rows+=("previous release, FMI 2 cycle|$(instructions_per_step "${old[@]}" STEPS 1 fmi2)"
+      "previous release, FMI 3 cycle|$(instructions_per_step "${old[@]}" STEPS 1 fmi3)")
+  fi
+  instruction_table "bench_fmi3's loops against the same anchor:" \
+    "anchor: hand-written 1-2-3 formula|$(instructions_per_step "${fmi3[@]}" STEPS 1 k123)" \
+    "general core, body123, inlined|$(instructions_per_step "${fmi3[@]}" STEPS 1 core)" "${rows[@]}"
+  echo
+  rows=("update + angles of body123|$(instructions_per_step "${ap[@]}" angles)"
+    "FMU: set omega + doStep + get q|$(instructions_per_step "${ap[@]}" q)"
+    "FMU: set omega + doStep + get q, theta|$(instructions_per_step "${ap[@]}" q+theta)")
+  if [ ${#previous_ap[@]} -gt 0 ]; then
+    local old_ap=(build/bench/bench_attitude "${previous_ap[1]}" --steps STEPS --only)
+    rows+=("previous release: get q|$(instructions_per_step "${old_ap[@]}" q)"
+      "previous release: get q, theta|$(instructions_per_step "${old_ap[@]}" q+theta)")
+  fi
+  instruction_table "AttitudePropagator against the bare quaternion update:" \
+    "anchor: bare quaternion update|$(instructions_per_step "${ap[@]}" bare)" "${rows[@]}"
 }
 
 {
@@ -141,7 +165,7 @@ callgrind_table() {
   "$driver" "$fmu_so" --steps "$steps" --repeats "$repeats" --calls "$calls"
   echo
   # The FMI 3 cycle beside the FMI 2 cycle and the core, alternately (bench/bench_fmi3.c).
-  build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" "$fmi3_steps" "$repeats"
+  build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" "$fmi3_steps" "$repeats" all "${previous_fmi3[@]}"
   echo
   if [ "$callgrind" = yes ] && command -v valgrind >/dev/null 2>&1; then
     callgrind_table
@@ -153,5 +177,5 @@ callgrind_table() {
   echo
   # AttitudePropagator (bench/bench_attitude.c): one CS step beside the bare quaternion update.
   build/bench/bench_attitude build/fmu/binaries/linux64/AttitudePropagator.so \
-    --steps "${steps##*,}" --repeats "$repeats"
+    --steps "${steps##*,}" --repeats "$repeats" "${previous_ap[@]}"
 } | tee build/last-run.md

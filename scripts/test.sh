@@ -2,9 +2,11 @@
 # The whole test suite, what CI runs (.ci/run):
 #   set up once (scripts/setup.sh: toolchains, wine, the abuse-test tools, .venv), build once per
 #   CMake preset, then: the C tests (ctest), a short benchmark run (no timing asserted: it checks
-#   that the FMU evaluates exactly when an input changed), the bounded abuse tests (sanitizers,
-#   valgrind, static analysis, fuzzing, soak: scripts/test_abuse.sh) beside the FMUs through fmpy
-#   (pytest); the abuse tests' output follows pytest's, and one line says how each ended.
+#   that the FMU evaluates exactly when an input changed), the speed regression guard
+#   (bench/guard.sh: callgrind instruction counts, a few seconds), the bounded abuse tests
+#   (sanitizers, valgrind, static analysis, fuzzing, soak: scripts/test_abuse.sh) beside the FMUs
+#   through fmpy (pytest); the abuse tests' output follows pytest's, and one line says how each
+#   ended.
 #
 #   bash scripts/test.sh              everything (CI)
 #   bash scripts/test.sh --quick      the edit loop: the native build only (preset release), ctest,
@@ -40,6 +42,7 @@ export AK_SET_UP=1 # the scripts below skip their own set-up and build
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure
 bash bench/run.sh --quick
+bash bench/guard.sh # callgrind instructions per cycle at most 3 % over the previous release's
 # The abuse tests run beside pytest: they use their own build folders and, for most of their time
 # (valgrind, cppcheck, TSan, one fuzzer of two), one core, so together the two keep both busy.
 # Their output goes to build/abuse.log, printed when pytest is done.
