@@ -2,13 +2,6 @@
  * Boolean and no String variables. */
 #include "fmi2_layer.h"
 
-/* vr and value given when there is anything to read or write. */
-static bool arrays_given(const ak_instance *instance, ak_fmi2_function function, size_t nvr,
-                         const void *vr, const void *values) {
-    return ak_given(instance, fmi2_name(function), nvr, "nvr", vr, "vr") &&
-           ak_given(instance, fmi2_name(function), nvr, "nvr", values, "value");
-}
-
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        fmi2Real value[]) {
     return fmi2_status(ak_get_reals(c, &FMI2_RULES[AK_FMI2_GET_REAL], vr, nvr, value));
@@ -23,8 +16,7 @@ fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
                           fmi2Integer value[]) {
     ak_instance *instance = c;
     const char *self = fmi2_name(AK_FMI2_GET_INTEGER);
-    if (!fmi2_allowed(instance, AK_FMI2_GET_INTEGER) ||
-        !arrays_given(instance, AK_FMI2_GET_INTEGER, nvr, vr, value)) {
+    if (!ak_scalar_call_valid(instance, &FMI2_RULES[AK_FMI2_GET_INTEGER], vr, nvr, value)) {
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
@@ -42,8 +34,7 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
                           const fmi2Integer value[]) {
     ak_instance *instance = c;
     const char *self = fmi2_name(AK_FMI2_SET_INTEGER);
-    if (!fmi2_allowed(instance, AK_FMI2_SET_INTEGER) ||
-        !arrays_given(instance, AK_FMI2_SET_INTEGER, nvr, vr, value)) {
+    if (!ak_scalar_call_valid(instance, &FMI2_RULES[AK_FMI2_SET_INTEGER], vr, nvr, value)) {
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
@@ -62,7 +53,7 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
 static fmi2Status reject_absent_type(const ak_instance *instance, ak_fmi2_function function,
                                      const char *type, size_t nvr, const void *vr,
                                      const void *values) {
-    if (!fmi2_allowed(instance, function) || !arrays_given(instance, function, nvr, vr, values)) {
+    if (!ak_scalar_call_valid(instance, &FMI2_RULES[function], vr, nvr, values)) {
         return fmi2Error;
     }
     if (nvr > 0) {

@@ -105,6 +105,20 @@ static inline bool ak_not_null(const ak_instance *instance, const char *function
                                const void *pointer, const char *name) {
     return pointer != NULL || ak_refuse_null_pointer(instance, function, name);
 }
+/* Logs the refusal of a NULL vr (or else value) with nvr > 0, in the layer's words; false. */
+bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
+                          bool vr_missing);
+/* The call of a getter or setter of scalar value references allowed, and vr and value given when
+ * there is anything to read or write. Inline even where the compiler would share a copy: every
+ * get and set of a communication point asks it. */
+static AK_ALWAYS_INLINE bool ak_scalar_call_valid(const ak_instance *instance,
+                                                  const ak_function_rule *call,
+                                                  const unsigned int vr[], size_t nvr,
+                                                  const void *value) {
+    return ak_call_allowed(instance, call) &&
+           (nvr == 0 || (vr != NULL && value != NULL) ||
+            ak_refuse_null_array(instance, call, nvr, vr == NULL));
+}
 /* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
  * its arrays first (FMI 2; the FMI 3 layer expands
  * its arrays into them where it has no faster path). */

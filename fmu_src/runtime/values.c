@@ -154,28 +154,16 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
     }
 }
 
-/* Out of line: the refusal of a NULL vr (or else value) with nvr > 0, in the layer's words. */
-AK_NOINLINE static bool refuse_null_array(const ak_instance *instance,
-                                          const ak_function_rule *call, size_t nvr,
-                                          bool vr_missing) {
+bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
+                          bool vr_missing) {
     const ak_layer *layer = instance->layer;
     return ak_refuse_null(instance, call->name, nvr, layer->vr_count_name,
                           vr_missing ? layer->vr_name : layer->values_name);
 }
 
-/* The call allowed, and vr and value given when there is anything to read or write. */
-static AK_ALWAYS_INLINE bool call_and_arrays_valid(const ak_instance *instance,
-                                                   const ak_function_rule *call,
-                                                   const unsigned int vr[], size_t nvr,
-                                                   const void *value) {
-    return ak_call_allowed(instance, call) &&
-           (nvr == 0 || (vr != NULL && value != NULL) ||
-            refuse_null_array(instance, call, nvr, vr == NULL));
-}
-
 ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, double value[]) {
-    if (!call_and_arrays_valid(instance, call, vr, nvr, value)) {
+    if (!ak_scalar_call_valid(instance, call, vr, nvr, value)) {
         return AK_STATUS_ERROR;
     }
     const char *const function = call->name;
@@ -285,7 +273,7 @@ static bool check_each_real(const ak_instance *instance, const char *function,
 
 ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, const double value[]) {
-    if (!call_and_arrays_valid(instance, call, vr, nvr, value)) {
+    if (!ak_scalar_call_valid(instance, call, vr, nvr, value)) {
         return AK_STATUS_ERROR;
     }
     const char *const function = call->name;
