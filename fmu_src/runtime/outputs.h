@@ -1,6 +1,6 @@
-/* When a model's outputs are computed: the freshness both FMI layers keep per instance, and the
- * one rule that brings it up to date (runtime/outputs.c). FMI-independent: a layer passes
- * whether it is still before the end of initialization, and logs what ran in its own words. */
+/* When a model's outputs are computed: the freshness the runtime keeps per instance, and the one
+ * rule that brings it up to date (runtime/outputs.c). The caller (ak_instance_update) passes
+ * whether it is still before the end of initialization, and traces what ran. */
 #ifndef ANGULAR_KINEMATICS_RUNTIME_OUTPUTS_H
 #define ANGULAR_KINEMATICS_RUNTIME_OUTPUTS_H
 
