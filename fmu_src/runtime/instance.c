@@ -80,6 +80,10 @@ static ak_real_role real_role(const ak_variable *variable) {
         return AK_REAL_PARAMETER;
     case AK_CAUSALITY_OUTPUT:
     default:
+        if (variable->causality == AK_CAUSALITY_OUTPUT &&
+            ak_state_index(AK_MODEL.state_vrs, variable->value_reference) >= 0) {
+            return AK_REAL_STATE_OUTPUT;
+        }
         return variable->group == AK_GROUP_DERIVED ? AK_REAL_DERIVED_OUTPUT
                : variable->group == AK_GROUP_LAZY  ? AK_REAL_LAZY_OUTPUT
                                                    : AK_REAL_MAIN_OUTPUT;

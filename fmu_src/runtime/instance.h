@@ -83,6 +83,9 @@ typedef enum {
     AK_REAL_ABSENT = 0, /* no Real variable has this value reference */
     AK_REAL_INPUT,
     AK_REAL_PARAMETER,
+    /* A continuous state that is an output: always current once initialization ended (the step
+     * and the state setters write it), so a get evaluates only before that. */
+    AK_REAL_STATE_OUTPUT,
     AK_REAL_MAIN_OUTPUT,
     AK_REAL_LAZY_OUTPUT,
     AK_REAL_DERIVED_OUTPUT,
@@ -196,8 +199,9 @@ static inline ak_real_role ak_real_role_of(const ak_instance *instance, unsigned
  * (absent: refused; an output group: brought up to date), one bit (1 << role) each. */
 static inline unsigned int ak_real_roles_of_run(const ak_instance *instance, unsigned int first,
                                                 size_t n) {
-    static const ak_real_role DECIDING[] = {AK_REAL_ABSENT, AK_REAL_MAIN_OUTPUT,
-                                            AK_REAL_LAZY_OUTPUT, AK_REAL_DERIVED_OUTPUT};
+    static const ak_real_role DECIDING[] = {AK_REAL_ABSENT, AK_REAL_STATE_OUTPUT,
+                                            AK_REAL_MAIN_OUTPUT, AK_REAL_LAZY_OUTPUT,
+                                            AK_REAL_DERIVED_OUTPUT};
     unsigned int roles = 0;
     for (size_t k = 0; k < sizeof DECIDING / sizeof DECIDING[0]; k++) {
         const unsigned char *before = instance->roles_before[DECIDING[k]];

@@ -105,15 +105,19 @@ static bool step_arguments_valid(const ak_instance *instance, const char *functi
     return true;
 }
 
-/* A step of a model with states or whose evaluation can fail: the states are advanced, then the
- * outputs are evaluated at the end of the step. When either fails the step is not taken
- * (DISCARD): time, states, inputs and outputs stay those of the last successful communication
- * point, and the importer may go back with an FMU state or reset, or terminate. */
+/* A step of a model with states or whose evaluation can fail: the states are advanced, then,
+ * with evaluate_in_step, the outputs are evaluated at the end of the step (else they wait for a
+ * read). When either fails the step is not taken (DISCARD): time, states, inputs and outputs stay
+ * those of the last successful communication point, and the importer may go back with an FMU
+ * state or reset, or terminate. */
 static ak_status step_evaluating(ak_instance *instance, const char *function, double t,
                                  double h) {
     /* What a refused step must put back: the values and input derivatives, when the states or
-     * the inputs move (a failed evaluation alone writes nothing). */
-    const bool moves = AK_MODEL.step != NULL || instance->data.any_input_derivative;
+     * the inputs move and something can fail after they moved (a failed model step or a failed
+     * evaluation alone writes nothing; the inputs move only with derivatives). */
+    const bool any_derivative = instance->data.any_input_derivative;
+    const bool moves = (AK_MODEL.step != NULL || any_derivative) &&
+                       (AK_MODEL.evaluate_in_step || any_derivative);
     double saved_values[AK_MAX_VARIABLES];
     double saved_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
     const size_t n_values = sizeof(double) * (size_t)AK_MODEL.n_value_references;
@@ -133,8 +137,9 @@ static ak_status step_evaluating(ak_instance *instance, const char *function, do
         }
         return AK_STATUS_ERROR;
     }
-    const ak_status status =
-        stepped != AK_EVAL_FAILED ? ak_instance_update(instance, AK_GROUP_MAIN) : AK_STATUS_DISCARD;
+    const ak_status status = stepped == AK_EVAL_FAILED  ? AK_STATUS_DISCARD
+                             : AK_MODEL.evaluate_in_step ? ak_instance_update(instance, AK_GROUP_MAIN)
+                                                         : AK_STATUS_OK;
     if (status == AK_STATUS_DISCARD) {
         if (moves) {
             memcpy(instance->data.values, saved_values, n_values);

@@ -168,7 +168,7 @@ ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
     }
     const char *const function = call->name;
     /* One bit per role read: the highest decides what must be brought up to date (nothing for
-     * inputs and parameters, the main group for its outputs, both groups for a lazy output).
+     * inputs, parameters and states after initialization, the main group for its outputs, both groups for a lazy output).
      * Consecutive value references are the usual get: their roles come from the run's ends and
      * their values from one copy. */
     const bool run = consecutive(vr, nvr);
@@ -191,7 +191,10 @@ ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
         status = ak_instance_update(instance, AK_GROUP_DERIVED);
     } else if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
         status = ak_instance_update(instance, AK_GROUP_LAZY);
-    } else if (roles & (1u << AK_REAL_MAIN_OUTPUT)) {
+    } else if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) ||
+               ((roles & (1u << AK_REAL_STATE_OUTPUT)) &&
+                (instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) != 0)) {
+        /* A state alone: only while it still follows the parameters (initialize). */
         status = ak_instance_update(instance, AK_GROUP_MAIN);
     }
     if (run) {

@@ -245,7 +245,7 @@ def test_bad_input_is_refused_and_changes_nothing(make_attitude_instance):
          "fmi2SetReal: q0[1] (vr[0] = 44) is a parameter of variability fixed: it can be set "
          "only in Instantiated and InitializationMode, not in StepComplete; no value set"),
         (lambda: instance.call("fmi2GetReal", (ctypes.c_uint * 1)(99), 1, (ctypes.c_double * 1)()),
-         "fmi2GetReal: vr[0] = 99 is not a value reference of this FMU (0 to 58)"),
+         "fmi2GetReal: vr[0] = 99 is not a value reference of this FMU (0 to 60)"),
         (lambda: call_other_interface(instance, "fmi2GetContinuousStates", (ctypes.c_double * 4)(), 4),
          "fmi2GetContinuousStates: a model-exchange function, but this instance was created "
          "for co-simulation (fmi2CoSimulation)"),

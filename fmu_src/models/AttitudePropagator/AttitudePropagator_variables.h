@@ -28,11 +28,13 @@ enum {
     AP_VR_H_PREVIOUS = 54,
     AP_VR_FIRST_STEP_VECTOR = 55,
     AP_VR_FIRST_STEP_PENDING = 58,
+    AP_VR_ANGLES_AGE = 59,
+    AP_VR_ANGLES_CHANGE_BOUND = 60,
     AP_VR_Q0 = 44,
     AP_N_INPUTS = 6,
     AP_N_OUTPUTS = 32,
     AP_N_STATES = 4,
-    AP_N_VALUE_REFERENCES = 59 /* highest value reference + 1 */
+    AP_N_VALUE_REFERENCES = 61 /* highest value reference + 1 */
 };
 
 extern const ak_variable AP_VARIABLES[AP_N_VALUE_REFERENCES];

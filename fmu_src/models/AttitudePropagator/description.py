@@ -100,6 +100,15 @@ VARIABLES = [
     dict(name="first_step_pending", vr=58, causality="local", type="Dimensionless",
          description="co-simulation: 1 while the previous step awaits that correction, else 0",
          depends=[]),
+    # When the angles are computed (model.c, lazy angles): values, so that an FMU state carries
+    # them and a replay is bit-identical.
+    dict(name="angles_age", vr=59, causality="local", type="Dimensionless",
+         description="co-simulation: steps taken since theta was last computed (0: theta is "
+                     "that of q)", depends=[]),
+    dict(name="angles_change_bound", vr=60, causality="local", type="Angle",
+         description="co-simulation: a bound on how far any angle has moved since theta was "
+                     "last computed (the sum over those steps of the rotation angle over the "
+                     "singularity distance)", depends=[]),
     dict(name="q0", vr=44, shape=(4,), causality="parameter", type="Dimensionless",
          start=lambda i: 1.0 if i == 1 else 0.0, min=-1.7976931348623157e308, max=1.7976931348623157e308,
          description="initial quaternion, component {i} (scalar first); normalized at "

@@ -67,18 +67,29 @@ static void to_other_frame(ak_frame frame, double R[3][3], const double in[3], d
     }
 }
 
-/* The main group, evaluated at every communication point (the angles' unwrapping follows the
- * path): R, theta and the distance from the states (normalized: model exchange integrators let
- * |q| drift) and the last angles (the reference of the unwrapping); der(q). */
-static ak_eval_status evaluate(ak_model_data *data) {
-    double *v = data->values;
-    const double *q = &v[AP_VR_Q];
+/* |q|, or 0 (logged) when the state q is not an attitude (a state set so in model exchange, or
+ * restored from such an FMU state). */
+static double attitude_norm(const ak_model_data *data) {
+    const double *q = &data->values[AP_VR_Q];
     const double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if (!(norm > 0.0) || !isfinite(norm)) {
         ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
                      "%s: the state q = (%g, %g, %g, %g) has |q| = %g: it is not an attitude; "
                      "the outputs keep their last valid values",
                      AK_MODEL.model_identifier, q[0], q[1], q[2], q[3], norm);
+        return 0.0;
+    }
+    return norm;
+}
+
+/* The main group: R, theta and the distance from the states (normalized: model exchange
+ * integrators let |q| drift) and the last angles computed (the reference of the unwrapping);
+ * der(q). In co-simulation it waits for a read (q itself is always current): see step_angles. */
+static ak_eval_status evaluate(ak_model_data *data) {
+    double *v = data->values;
+    const double *q = &v[AP_VR_Q];
+    const double norm = attitude_norm(data);
+    if (norm == 0.0) {
         return AK_EVAL_FAILED;
     }
     const double unit[4] = {q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm};
@@ -95,8 +106,60 @@ static ak_eval_status evaluate(ak_model_data *data) {
         }
     }
     v[AP_VR_SINGULARITY_DISTANCE] = distance;
+    v[AP_VR_ANGLES_AGE] = 0.0;
+    v[AP_VR_ANGLES_CHANGE_BOUND] = 0.0;
     derivatives(data);
     return AK_EVAL_OK;
+}
+
+/* Lazy angles, bit-identical to angles computed at every communication point. The angles
+ * unwrap to the set nearest the last one computed, so computed from an older set they could
+ * differ; they do not while every angle moved by less than 1 rad since: each candidate set
+ * other than the continued one is at least pi - 1 away in two components (core/attitude.h,
+ * sections 5, 6), so the nearest is the continued one, which the computation at every point
+ * would also have reached (unwrap and the choice of set depend on the reference only through
+ * that). A step of rotation angle a, ending at singularity distance d, moves each angle by at
+ * most a / (d - a): |theta_dot_m| <= |omega| / |det W| (a row of W^-1 is a cross product of two
+ * unit axes over det W), and d changes by at most the rotation angle. a <= pi |q_new - q_old|,
+ * taken as 4 |q_new - q_old|. */
+static const double ANGLES_CHANGE_LIMIT = 1.0;
+
+/* The entry of R(q) whose size gives the singularity distance d = sqrt(1 - r^2) of the
+ * sequence: R[i][i] (proper Euler) or R[i][k] (Tait-Bryan), i, j, k the chain's axes as in
+ * core/attitude.c's principal angles. */
+static double distance_entry(const ak_sequence *sequence, const double q[4]) {
+    const int i = sequence->axes[sequence->kind == AK_SPACE_FIXED ? 2 : 0] - 1;
+    const int j = sequence->axes[1] - 1;
+    if (sequence->proper_euler) { /* 1 - 2 (q_a^2 + q_b^2), a, b the other two axes */
+        const double a = q[1 + (i + 1) % 3], b = q[1 + (i + 2) % 3];
+        return 1.0 - 2.0 * (a * a + b * b);
+    }
+    const int k = 3 - i - j; /* 2 (q_i q_k -+ q0 q_j): minus when k follows i */
+    const double sign = k == (i + 1) % 3 ? -1.0 : 1.0;
+    return 2.0 * (q[1 + i] * q[1 + k] + sign * q[0] * q[1 + j]);
+}
+
+/* Before the state moves from v[q] to q_new: computes the angles at v[q] when a catch-up from
+ * the last computed ones could differ after this step, and counts the step. */
+static void step_angles(ak_model_data *data, const double q_new[4]) {
+    double *v = data->values;
+    double moved2 = 0.0;
+    for (int k = 0; k < 4; k++) {
+        moved2 += (q_new[k] - v[AP_VR_Q + k]) * (q_new[k] - v[AP_VR_Q + k]);
+    }
+    const double rotation = 4.0 * sqrt(moved2);
+    const double r = distance_entry(sequence_of(data), q_new);
+    const double margin = sqrt(fmax(1.0 - r * r, 0.0)) - rotation;
+    const double change = margin > 2.0 * AK_ATTITUDE_SINGULAR_DISTANCE ? rotation / margin
+                                                                       : INFINITY;
+    double bound = v[AP_VR_ANGLES_CHANGE_BOUND] + change;
+    if (v[AP_VR_ANGLES_AGE] >= 1.0 && !(bound <= ANGLES_CHANGE_LIMIT)) {
+        (void)evaluate(data); /* a unit q from the last step: cannot fail */
+        bound = change;
+    }
+    v[AP_VR_ANGLES_AGE] += 1.0;
+    /* Finite, as every value of an FMU state: past the limit, the next step computes them. */
+    v[AP_VR_ANGLES_CHANGE_BOUND] = bound <= ANGLES_CHANGE_LIMIT ? bound : 2.0 * ANGLES_CHANGE_LIMIT;
 }
 
 /* The lazy group, computed only when one of them is read: the angle rates, omega and alpha in
@@ -159,12 +222,17 @@ static ak_eval_status initialize(ak_model_data *data) {
     double R[3][3], distance;
     ak_quat_to_matrix(&v[AP_VR_Q], R);
     ak_attitude_angles(sequence_of(data), R, NULL, &v[AP_VR_THETA], &distance);
+    v[AP_VR_ANGLES_AGE] = 0.0;
+    v[AP_VR_ANGLES_CHANGE_BOUND] = 0.0;
     return AK_EVAL_OK;
 }
 
 /* One co-simulation step (core/attitude.h, section 4): the cubic of omega from the inputs, their
  * derivatives and the previous communication point, then the Magnus step. */
 static ak_eval_status step(ak_model_data *data, double h) {
+    if (attitude_norm(data) == 0.0) { /* the outputs are not evaluated after the step */
+        return AK_EVAL_FAILED;
+    }
     double w1[3], w2[3], c[4][3];
     acceleration(data, w1, w2);
     double *v = data->values;
@@ -206,6 +274,7 @@ static ak_eval_status step(ak_model_data *data, double h) {
     if (first) {
         ak_attitude_step_vector(frame_of(data), c, h, taken);
     }
+    step_angles(data, q);
     for (int k = 0; k < 4; k++) {
         v[AP_VR_Q + k] = q[k];
     }
@@ -409,8 +478,9 @@ const ak_model AK_MODEL = {
     .can_interpolate_inputs = true,
     .outputs_use_input_derivatives = true, /* alpha, from omega's derivatives (acceleration) */
     .derived = &AP_DERIVED_OUTPUTS,
-    /* The unwrapped angles depend on the path: evaluated at every communication point. */
-    .evaluate_in_step = true,
+    /* The unwrapped angles depend on the path: the step computes them when a later read could
+     * differ (step_angles); otherwise they wait for a read. */
+    .evaluate_in_step = false,
     .n_states = AP_N_STATES,
     .state_vrs = STATE_VRS,
     .derivative_vrs = DERIVATIVE_VRS,

@@ -1,0 +1,114 @@
+"""AttitudePropagator's lazy angles (model.c, step_angles): in co-simulation the angles are
+computed when read, from the last ones computed, and by the step itself when a later read could
+differ. Reading them rarely must give the bits of reading them at every communication point:
+for every sequence and both frames, through fast tumbling, the singular configuration, steps
+that turn by more than a radian, input derivatives (the retaken first step) and an FMU state
+taken while the angles wait."""
+import ctypes
+
+import numpy as np
+import pytest
+
+from attitude_support import FRAME, OMEGA, Q, THETA, make_attitude_instance  # noqa: F401
+
+ANGLE_OUTPUTS = THETA + ["theta_dot[1]", "theta_dot[3]", "R[1,3]", "singularity_distance"]
+
+
+def omega_at(n, kind):
+    """Inputs at communication point n: a fast tumble; a spin about body axis 2 through the
+    singular attitude of the Tait-Bryan sequences whose middle axis is 2; or jumps of up to
+    40 rad/s (several radians per step)."""
+    t = 0.05 * n
+    if kind == "tumble":
+        return [3.0 * np.sin(0.7 * t) + 1.0, 2.0 * np.cos(1.3 * t), 4.0 * np.sin(0.4 * t + 1.0)]
+    if kind == "through_singular":
+        return [1e-9 * np.sin(t), np.pi / 2 / 0.05 / 20, 0.0]  # pi/2 in 20 steps
+    return [40.0 * np.sin(1.7 * n), 25.0 * np.cos(2.3 * n), 30.0 * np.sin(0.9 * n + 0.5)]
+
+
+def drive(instance, steps, kind, read_every, with_derivatives, first=0, record=None):
+    """Steps first .. steps - 1; after each, q is read, and every read_every-th step the angle
+    outputs too: {step: values} into record."""
+    record = {} if record is None else record
+    vrs = (ctypes.c_uint * 3)(*[instance.vr[n] for n in OMEGA])
+    for n in range(first, steps):
+        instance.set(dict(zip(OMEGA, omega_at(n, kind))))
+        if with_derivatives:
+            slopes = (ctypes.c_double * 3)(*omega_at(n + 0.5, kind))
+            instance.call("fmi2SetRealInputDerivatives", vrs, 3, (ctypes.c_int * 3)(1, 1, 1), slopes)
+        instance.fmu.doStep(0.05 * n, 0.05)  # raises unless fmi2OK
+        names = Q + ANGLE_OUTPUTS if (n + 1) % read_every == 0 else Q
+        record[n] = dict(zip(names, instance.get(names)))
+    return record
+
+
+def started(make, sequence, frame):
+    instance = make()
+    instance.initialize(parameters={"sequence": sequence, "frame": FRAME[frame]},
+                        inputs={"omega_dot[1]": 0.0})
+    return instance
+
+
+def assert_same_bits(dense, sparse):
+    """Every value the sparse run read equals the dense run's, bit for bit."""
+    for n, values in sparse.items():
+        for name, value in values.items():
+            assert np.float64(value).tobytes() == np.float64(dense[n][name]).tobytes(), (n, name)
+
+
+@pytest.mark.parametrize("sequence", range(1, 25))
+@pytest.mark.parametrize("frame", ["body", "fixed"])
+def test_angles_read_rarely_are_those_read_at_every_step(sequence, frame, make_attitude_instance):
+    for kind, with_derivatives in [("tumble", False), ("through_singular", False),
+                                   ("jumps", False), ("tumble", True)]:
+        steps = 120
+        dense = drive(started(make_attitude_instance, sequence, frame), steps, kind, 1,
+                      with_derivatives)
+        for read_every in (3, 40):
+            sparse = drive(started(make_attitude_instance, sequence, frame), steps, kind,
+                           read_every, with_derivatives)
+            assert_same_bits(dense, sparse)
+
+
+def test_a_state_taken_while_the_angles_wait_replays_the_same_bits(make_attitude_instance):
+    """A state taken after steps without a read of the angles, restored into a fresh instance and
+    into the same one: reading the angles from there gives the bits of the run read throughout."""
+    dense = drive(started(make_attitude_instance, 1, "body"), 90, "tumble", 1, True)
+    first = started(make_attitude_instance, 1, "body")
+    drive(first, 45, "tumble", 1000, True)
+    drive(first, 50, "tumble", 1000, True, first=45)
+    state = first.fmu.getFMUState()
+    serialized = first.fmu.serializeFMUState(state)
+    assert_same_bits(dense, drive(first, 90, "tumble", 7, True, first=50))
+    first.fmu.setFMUState(state)
+    assert_same_bits(dense, drive(first, 90, "tumble", 1, True, first=50))
+    second = started(make_attitude_instance, 1, "body")
+    second.fmu.setFMUState(second.fmu.deserializeFMUState(serialized))
+    assert_same_bits(dense, drive(second, 90, "tumble", 13, True, first=50))
+    first.fmu.freeFMUState(state)
+
+
+def image_value(instance, name):
+    """A value as an FMU state holds it (values by value reference after the 88-byte header,
+    docs/capabilities.md#fmu-state), read without a get (a get of a local evaluates)."""
+    state = instance.fmu.getFMUState()
+    image = instance.fmu.serializeFMUState(state)
+    instance.fmu.freeFMUState(state)
+    offset = 88 + 8 * instance.vr[name]
+    return np.frombuffer(bytes(image[offset:offset + 8]), dtype="<f8")[0]
+
+
+def test_the_step_computes_the_angles_only_when_a_read_could_differ(make_attitude_instance):
+    """A slow rotation: the angles wait for a read over all 30 steps; jumps of several radians
+    per step: the step computes them at every step, before it moves the state."""
+    for kind, age in [("slow", 30.0), ("jumps", 1.0)]:
+        instance = started(make_attitude_instance, 1, "body")
+        for n in range(30):
+            omega = [0.1, 0.05, -0.02] if kind == "slow" else omega_at(n, "jumps")
+            instance.set(dict(zip(OMEGA, omega)))
+            instance.fmu.doStep(0.05 * n, 0.05)
+            instance.get(Q)  # a state: read without an evaluation
+        assert image_value(instance, "angles_age") == age
+        assert (image_value(instance, "angles_change_bound") <= 1.0) == (kind == "slow")
+        instance.get(THETA)
+        assert image_value(instance, "angles_age") == 0.0
