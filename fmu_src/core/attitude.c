@@ -64,6 +64,18 @@ void ak_attitude_input_polynomial(const double w0[3], const double w1[3], const 
     }
 }
 
+/* Omega from omega at the two Gauss points (section 4). */
+static void gauss_combination(ak_frame frame, double a[2][3], double h, double omega_vector[3]) {
+    const double cross[3] = {a[0][1] * a[1][2] - a[0][2] * a[1][1],
+                             a[0][2] * a[1][0] - a[0][0] * a[1][2],
+                             a[0][0] * a[1][1] - a[0][1] * a[1][0]};
+    /* +sqrt(3)/24 for q (x) A (body), - for A (x) q (fixed). */
+    const double commutator = (frame == AK_FRAME_BODY ? 1.0 : -1.0) * 0.07216878364870322056 * h * h;
+    for (int k = 0; k < 3; k++) {
+        omega_vector[k] = 0.25 * h * (a[0][k] + a[1][k]) + commutator * cross[k];
+    }
+}
+
 void ak_attitude_step_vector(ak_frame frame, double c[4][3], double h, double omega_vector[3]) {
     /* Gauss points s = h (1/2 -+ sqrt(3)/6) of the polynomial omega(s) (attitude.h, section 4). */
     const double r = 0.28867513459481288225; /* sqrt(3) / 6 */
@@ -74,14 +86,18 @@ void ak_attitude_step_vector(ak_frame frame, double c[4][3], double h, double om
             a[g][k] = c[0][k] + s[g] * (c[1][k] + s[g] * (c[2][k] + s[g] * c[3][k]));
         }
     }
-    const double cross[3] = {a[0][1] * a[1][2] - a[0][2] * a[1][1],
-                             a[0][2] * a[1][0] - a[0][0] * a[1][2],
-                             a[0][0] * a[1][1] - a[0][1] * a[1][0]};
-    /* +sqrt(3)/24 for q (x) A (body), - for A (x) q (fixed). */
-    const double commutator = (frame == AK_FRAME_BODY ? 1.0 : -1.0) * 0.07216878364870322056 * h * h;
+    gauss_combination(frame, a, h, omega_vector);
+}
+
+void ak_attitude_step_vector_constant(ak_frame frame, const double omega[3], double h,
+                                      double omega_vector[3]) {
+    /* ak_attitude_step_vector's polynomial at either Gauss point s >= 0 with c1 = c2 = c3 = +0
+     * is c0 + s (0 + s (0 + s 0)) = c0 + (+0), bit for bit (x + 0.0 is not x for x = -0). */
+    double a[2][3];
     for (int k = 0; k < 3; k++) {
-        omega_vector[k] = 0.25 * h * (a[0][k] + a[1][k]) + commutator * cross[k];
+        a[0][k] = a[1][k] = omega[k] + 0.0;
     }
+    gauss_combination(frame, a, h, omega_vector);
 }
 
 void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
@@ -103,8 +119,13 @@ void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
 }
 
 bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction) {
-    double v[3], e[4], next[4];
+    double v[3];
     ak_attitude_step_vector(frame, c, h, v);
+    return ak_attitude_advance(frame, v, q, correction);
+}
+
+bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double *correction) {
+    double e[4], next[4];
     ak_quat_exp(v, e);
     if (frame == AK_FRAME_BODY) {
         ak_quat_multiply(q, e, next);

@@ -122,6 +122,10 @@ void ak_attitude_input_polynomial(const double w0[3], const double w1[3], const 
 /* The rotation vector Omega of one step (section 4) for omega(s) = sum c[m] s^m, step h. */
 void ak_attitude_step_vector(ak_frame frame, double c[4][3], double h, double omega_vector[3]);
 
+/* ak_attitude_step_vector for a constant omega (c = {omega, 0, 0, 0}), bit for bit, cheaper. */
+void ak_attitude_step_vector_constant(ak_frame frame, const double omega[3], double h,
+                                      double omega_vector[3]);
+
 /* q := q (x) exp(-old) (x) exp(new) (body) or exp(new) (x) exp(-old) (x) q (fixed): a step that
  * was taken with the rotation vector `old` retaken with `new` (section 4, the first step). */
 void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
@@ -131,6 +135,10 @@ void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
  * finite (a huge omega h). *correction (may be NULL) receives |q_new - q_uncorrected|, the size
  * of the rounding correction. */
 bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction);
+
+/* The same step from its rotation vector Omega (ak_attitude_step_vector): q := q (x) exp(Omega)
+ * (body) or exp(Omega) (x) q (fixed), the norm correction, the same result and refusal. */
+bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double *correction);
 
 /* Angles of `sequence` for the attitude R (sections 5, 6). previous: the last angle set of the
  * same trajectory, or NULL for the principal set. Writes theta and the singularity distance;

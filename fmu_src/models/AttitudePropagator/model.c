@@ -6,6 +6,7 @@
  * outputs stay finite at the singular configuration, so no state event is needed. */
 #include "AttitudePropagator_variables.h"
 
+#include <float.h>
 #include <math.h>
 
 #include "attitude.h"
@@ -128,14 +129,14 @@ static const double ANGLES_CHANGE_LIMIT = 1.0;
  * sequence: R[i][i] (proper Euler) or R[i][k] (Tait-Bryan), i, j, k the chain's axes as in
  * core/attitude.c's principal angles. */
 static double distance_entry(const ak_sequence *sequence, const double q[4]) {
+    static const int NEXT[3] = {1, 2, 0}; /* (a + 1) % 3 without a division */
     const int i = sequence->axes[sequence->kind == AK_SPACE_FIXED ? 2 : 0] - 1;
-    const int j = sequence->axes[1] - 1;
     if (sequence->proper_euler) { /* 1 - 2 (q_a^2 + q_b^2), a, b the other two axes */
-        const double a = q[1 + (i + 1) % 3], b = q[1 + (i + 2) % 3];
+        const double a = q[1 + NEXT[i]], b = q[1 + NEXT[NEXT[i]]];
         return 1.0 - 2.0 * (a * a + b * b);
     }
-    const int k = 3 - i - j; /* 2 (q_i q_k -+ q0 q_j): minus when k follows i */
-    const double sign = k == (i + 1) % 3 ? -1.0 : 1.0;
+    const int j = sequence->axes[1] - 1, k = 3 - i - j; /* 2 (q_i q_k -+ q0 q_j): - if k follows i */
+    const double sign = k == NEXT[i] ? -1.0 : 1.0;
     return 2.0 * (q[1 + i] * q[1 + k] + sign * q[0] * q[1 + j]);
 }
 
@@ -149,7 +150,8 @@ static void step_angles(ak_model_data *data, const double q_new[4]) {
     }
     const double rotation = 4.0 * sqrt(moved2);
     const double r = distance_entry(sequence_of(data), q_new);
-    const double margin = sqrt(fmax(1.0 - r * r, 0.0)) - rotation;
+    const double d2 = 1.0 - r * r; /* below 0 only by rounding */
+    const double margin = sqrt(d2 > 0.0 ? d2 : 0.0) - rotation;
     const double change = margin > 2.0 * AK_ATTITUDE_SINGULAR_DISTANCE ? rotation / margin
                                                                        : INFINITY;
     double bound = v[AP_VR_ANGLES_CHANGE_BOUND] + change;
@@ -230,37 +232,52 @@ static ak_eval_status initialize(ak_model_data *data) {
 /* One co-simulation step (core/attitude.h, section 4): the cubic of omega from the inputs, their
  * derivatives and the previous communication point, then the Magnus step. */
 static ak_eval_status step(ak_model_data *data, double h) {
-    if (attitude_norm(data) == 0.0) { /* the outputs are not evaluated after the step */
+    double *v = data->values;
+    const double *q_now = &v[AP_VR_Q];
+    const double n2 = q_now[0] * q_now[0] + q_now[1] * q_now[1] + q_now[2] * q_now[2] +
+                      q_now[3] * q_now[3];
+    if (!(n2 > 0.0 && n2 <= DBL_MAX)) { /* as evaluate refuses it; logged there */
+        (void)attitude_norm(data);
         return AK_EVAL_FAILED;
     }
-    double w1[3], w2[3], c[4][3];
-    acceleration(data, w1, w2);
-    double *v = data->values;
-    const bool derivatives_given = w1[0] != 0.0 || w1[1] != 0.0 || w1[2] != 0.0 ||
-                                   w2[0] != 0.0 || w2[1] != 0.0 || w2[2] != 0.0;
-    const double hp = v[AP_VR_H_PREVIOUS];
-    const bool history = derivatives_given && hp > 0.0;
-    double q[4] = {v[AP_VR_Q], v[AP_VR_Q + 1], v[AP_VR_Q + 2], v[AP_VR_Q + 3]};
-    if (history && v[AP_VR_FIRST_STEP_PENDING] != 0.0) {
-        /* Retake the first step with the Hermite cubic over it (core/attitude.h, section 4). */
-        const double none[3] = {0.0, 0.0, 0.0};
-        double previous[4][3], retaken[3];
-        ak_attitude_input_polynomial(&v[AP_VR_OMEGA_PREVIOUS], &v[AP_VR_OMEGA_DOT_PREVIOUS], none,
-                                     &v[AP_VR_OMEGA], w1, -hp, previous);
-        ak_attitude_step_vector(frame_of(data), previous, hp, retaken);
-        ak_attitude_retake_step(frame_of(data), &v[AP_VR_FIRST_STEP_VECTOR], retaken, q);
-    }
-    if (derivatives_given) {
-        ak_attitude_input_polynomial(&v[AP_VR_OMEGA], w1, w2,
-                                     history ? &v[AP_VR_OMEGA_PREVIOUS] : NULL,
-                                     history ? &v[AP_VR_OMEGA_DOT_PREVIOUS] : NULL, hp, c);
-    } else { /* held inputs: omega constant over the step */
+    double w1[3], w2[3], vector[3];
+    double q[4] = {q_now[0], q_now[1], q_now[2], q_now[3]};
+    bool derivatives_given = false, first = false;
+    const bool omega_dot_given = v[AP_VR_OMEGA_DOT] != 0.0 || v[AP_VR_OMEGA_DOT + 1] != 0.0 ||
+                                 v[AP_VR_OMEGA_DOT + 2] != 0.0;
+    if (!omega_dot_given && !data->any_input_derivative) {
+        /* Held inputs (acceleration gives w1 = w2 = 0): omega constant over the step. */
         for (int k = 0; k < 3; k++) {
-            c[0][k] = v[AP_VR_OMEGA + k];
-            c[1][k] = c[2][k] = c[3][k] = 0.0;
+            w1[k] = data->input_derivatives[AP_VR_OMEGA + k][0];
         }
+        ak_attitude_step_vector_constant(frame_of(data), &v[AP_VR_OMEGA], h, vector);
+    } else {
+        acceleration(data, w1, w2);
+        derivatives_given = w1[0] != 0.0 || w1[1] != 0.0 || w1[2] != 0.0 || w2[0] != 0.0 ||
+                            w2[1] != 0.0 || w2[2] != 0.0;
+        const double hp = v[AP_VR_H_PREVIOUS];
+        const bool history = derivatives_given && hp > 0.0;
+        if (history && v[AP_VR_FIRST_STEP_PENDING] != 0.0) {
+            /* Retake the first step with the Hermite cubic over it (core/attitude.h, section 4). */
+            const double none[3] = {0.0, 0.0, 0.0};
+            double previous[4][3], retaken[3];
+            ak_attitude_input_polynomial(&v[AP_VR_OMEGA_PREVIOUS], &v[AP_VR_OMEGA_DOT_PREVIOUS],
+                                         none, &v[AP_VR_OMEGA], w1, -hp, previous);
+            ak_attitude_step_vector(frame_of(data), previous, hp, retaken);
+            ak_attitude_retake_step(frame_of(data), &v[AP_VR_FIRST_STEP_VECTOR], retaken, q);
+        }
+        if (derivatives_given) {
+            double c[4][3];
+            ak_attitude_input_polynomial(&v[AP_VR_OMEGA], w1, w2,
+                                         history ? &v[AP_VR_OMEGA_PREVIOUS] : NULL,
+                                         history ? &v[AP_VR_OMEGA_DOT_PREVIOUS] : NULL, hp, c);
+            ak_attitude_step_vector(frame_of(data), c, h, vector);
+        } else { /* held inputs */
+            ak_attitude_step_vector_constant(frame_of(data), &v[AP_VR_OMEGA], h, vector);
+        }
+        first = derivatives_given && !history;
     }
-    if (!ak_attitude_step(frame_of(data), c, h, q, NULL)) {
+    if (!ak_attitude_advance(frame_of(data), vector, q, NULL)) {
         /* Logged as the step's result: the layer discards the step (the instance stays usable). */
         ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
                      "%s: omega = (%g, %g, %g) over the communication step size %g gives a "
@@ -269,11 +286,6 @@ static ak_eval_status step(ak_model_data *data, double h) {
                      v[AP_VR_OMEGA + 2], h);
         return AK_EVAL_FAILED;
     }
-    const bool first = derivatives_given && !history;
-    double taken[3] = {0.0, 0.0, 0.0};
-    if (first) {
-        ak_attitude_step_vector(frame_of(data), c, h, taken);
-    }
     step_angles(data, q);
     for (int k = 0; k < 4; k++) {
         v[AP_VR_Q + k] = q[k];
@@ -281,7 +293,8 @@ static ak_eval_status step(ak_model_data *data, double h) {
     for (int k = 0; k < 3; k++) {
         v[AP_VR_OMEGA_PREVIOUS + k] = v[AP_VR_OMEGA + k];
         v[AP_VR_OMEGA_DOT_PREVIOUS + k] = w1[k];
-        v[AP_VR_FIRST_STEP_VECTOR + k] = taken[k];
+        /* The first step with derivatives is retaken at the next (its rotation vector kept). */
+        v[AP_VR_FIRST_STEP_VECTOR + k] = first ? vector[k] : 0.0;
     }
     v[AP_VR_H_PREVIOUS] = derivatives_given ? h : 0.0;
     v[AP_VR_FIRST_STEP_PENDING] = first ? 1.0 : 0.0;
