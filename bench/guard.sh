@@ -25,8 +25,10 @@ measure() {
   local euler=(build/bench/bench_fmi3 "$fmi2/EulerRates.so" "$fmi3/EulerRates.so")
   echo "EulerRates 2 $(instructions_per_step "${euler[@]}" STEPS 1 fmi2)"
   echo "EulerRates 3 $(instructions_per_step "${euler[@]}" STEPS 1 fmi3)"
-  echo "AttitudePropagator 2 $(instructions_per_step build/bench/bench_attitude \
-    "$fmi2/AttitudePropagator.so" --steps STEPS --only q+theta)"
+  local attitude=(build/bench/bench_attitude "$fmi2/AttitudePropagator.so" --fmi3
+    "$fmi3/AttitudePropagator.so" --steps STEPS)
+  echo "AttitudePropagator 2 $(instructions_per_step "${attitude[@]}" --only q+theta)"
+  echo "AttitudePropagator 3 $(instructions_per_step "${attitude[@]}" --only q+theta3)"
 }
 
 if [ "${1:-}" = --record ]; then
@@ -37,7 +39,8 @@ if [ "${1:-}" = --record ]; then
     echo "# through the current drivers:"
     echo "# AngularKinematics body123 and EulerRates: set 9 + doStep + get 12 (FMI 3: 3 sets of 3,"
     echo "# one get of 4 arrays);"
-    echo "# AttitudePropagator set omega + doStep + get q, theta."
+    echo "# AttitudePropagator set omega + doStep + get q, theta (FMI 3: one set, one get of 2"
+    echo "# arrays)."
     echo "# Written by bash bench/guard.sh --record."
     echo "# model FMI-version instructions"
     measure "$previous/build"

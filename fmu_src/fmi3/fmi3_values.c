@@ -88,14 +88,12 @@ static bool arguments_given(const ak_instance *instance, const char *function, s
 
 /* The usual get of every communication point: arrays of outputs (their first value references),
  * exactly nValues elements in all. Anything else takes the checked path. *upto: the highest group
- * among them; *one_run: they follow each other in the value array (one copy serves);
- * *only_states: all are continuous states (AK_REAL_STATE_OUTPUT). */
-static bool usual_get(const ak_instance *instance, const fmi3ValueReference vr[], size_t nvr,
-                      size_t n_values, ak_group *upto, bool *one_run, bool *only_states) {
+ * among them; *one_run: they follow each other in the value array (one copy serves). */
+static bool usual_get(const fmi3ValueReference vr[], size_t nvr, size_t n_values, ak_group *upto,
+                      bool *one_run) {
     size_t total = 0;
     *upto = AK_GROUP_MAIN;
     *one_run = true;
-    *only_states = true;
     if (nvr == 0) {
         return false; /* nothing to read: the checked path answers it */
     }
@@ -108,7 +106,6 @@ static bool usual_get(const ak_instance *instance, const fmi3ValueReference vr[]
             *upto = AK_MODEL.variables[vr[i]].group;
         }
         *one_run &= vr[i] == vr[0] + total;
-        *only_states &= ak_real_role_of(instance, vr[i]) == AK_REAL_STATE_OUTPUT;
         total += array->n_elements;
     }
     return total == n_values;
@@ -196,11 +193,13 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         return fmi3Error;
     }
     ak_group upto;
-    bool one_run, only_states;
-    if (usual_get(instance, vr, nvr, nValues, &upto, &one_run, &only_states)) {
-        /* States alone need no evaluation once they no longer follow the parameters. */
-        const bool current =
-            only_states && (instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) == 0;
+    bool one_run;
+    if (usual_get(vr, nvr, nValues, &upto, &one_run)) {
+        /* The states alone (one array: AttitudePropagator's q) are current without an evaluation
+         * once they no longer follow the parameters. */
+        const bool current = AK_MODEL.n_states > 0 && nvr == 1 &&
+                             ak_real_role_of(instance, vr[0]) == AK_REAL_STATE_OUTPUT &&
+                             !ak_states_follow_parameters(instance, vr, nvr);
         const fmi3Status status =
             current ? fmi3OK : fmi3_status(ak_instance_update(instance, upto));
         if (one_run) {

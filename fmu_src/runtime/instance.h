@@ -84,7 +84,8 @@ typedef enum {
     AK_REAL_INPUT,
     AK_REAL_PARAMETER,
     /* A continuous state that is an output: always current once initialization ended (the step
-     * and the state setters write it), so a get evaluates only before that. */
+     * and the state setters write it), so a get evaluates only before that (ak_get_reals and the
+     * FMI 3 getter ask for it then; it does not decide a run's roles). */
     AK_REAL_STATE_OUTPUT,
     AK_REAL_MAIN_OUTPUT,
     AK_REAL_LAZY_OUTPUT,
@@ -199,9 +200,8 @@ static inline ak_real_role ak_real_role_of(const ak_instance *instance, unsigned
  * (absent: refused; an output group: brought up to date), one bit (1 << role) each. */
 static inline unsigned int ak_real_roles_of_run(const ak_instance *instance, unsigned int first,
                                                 size_t n) {
-    static const ak_real_role DECIDING[] = {AK_REAL_ABSENT, AK_REAL_STATE_OUTPUT,
-                                            AK_REAL_MAIN_OUTPUT, AK_REAL_LAZY_OUTPUT,
-                                            AK_REAL_DERIVED_OUTPUT};
+    static const ak_real_role DECIDING[] = {AK_REAL_ABSENT, AK_REAL_MAIN_OUTPUT,
+                                            AK_REAL_LAZY_OUTPUT, AK_REAL_DERIVED_OUTPUT};
     unsigned int roles = 0;
     for (size_t k = 0; k < sizeof DECIDING / sizeof DECIDING[0]; k++) {
         const unsigned char *before = instance->roles_before[DECIDING[k]];
@@ -209,6 +209,11 @@ static inline unsigned int ak_real_roles_of_run(const ak_instance *instance, uns
     }
     return roles;
 }
+
+/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
+ * initialization has not ended (the states follow the parameters until then); after that a
+ * state is current without an evaluation. */
+bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr);
 
 /* Brings the output groups up to `upto` (main; main and lazy; every output) up to date with the
  * inputs, evaluating only what an input or parameter change made stale (traced in logCalls);

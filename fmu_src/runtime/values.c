@@ -161,6 +161,18 @@ bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *c
                           vr_missing ? layer->vr_name : layer->values_name);
 }
 
+bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr) {
+    if ((instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) == 0) {
+        return false;
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        if (ak_real_role_of(instance, vr[i]) == AK_REAL_STATE_OUTPUT) {
+            return true;
+        }
+    }
+    return false;
+}
+
 ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, double value[]) {
     if (!ak_scalar_call_valid(instance, call, vr, nvr, value)) {
@@ -191,10 +203,7 @@ ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
         status = ak_instance_update(instance, AK_GROUP_DERIVED);
     } else if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
         status = ak_instance_update(instance, AK_GROUP_LAZY);
-    } else if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) ||
-               ((roles & (1u << AK_REAL_STATE_OUTPUT)) &&
-                (instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) != 0)) {
-        /* A state alone: only while it still follows the parameters (initialize). */
+    } else if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) || ak_states_follow_parameters(instance, vr, nvr)) {
         status = ak_instance_update(instance, AK_GROUP_MAIN);
     }
     if (run) {

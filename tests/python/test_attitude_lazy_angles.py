@@ -112,3 +112,27 @@ def test_the_step_computes_the_angles_only_when_a_read_could_differ(make_attitud
         assert (image_value(instance, "angles_change_bound") <= 1.0) == (kind == "slow")
         instance.get(THETA)
         assert image_value(instance, "angles_age") == 0.0
+
+
+def test_q_follows_q0_until_initialization_ends_in_both_layers(make_attitude_instance):
+    """A get of q alone evaluates only while the states follow the parameters: in Initialization
+    Mode it gives the normalized q0 just set (FMI 2 and FMI 3); after it, the stepped q."""
+    fmi2 = make_attitude_instance()
+    fmi2.fmu.setupExperiment(startTime=0.0)
+    fmi2.fmu.enterInitializationMode()
+    assert fmi2.set({"q0[1]": 0.0, "q0[2]": 3.0, "q0[4]": -4.0}) == 0
+    assert list(fmi2.get(Q)) == [0.0, 0.6, 0.0, -0.8]
+    fmi2.fmu.exitInitializationMode()
+    fmi2.set({"omega[1]": 2.0})
+    fmi2.fmu.doStep(0.0, 0.5)
+    assert list(fmi2.get(Q)) != [0.0, 0.6, 0.0, -0.8]
+
+    fmi3 = make_attitude_instance(fmi_version=3)
+    assert fmi3.call("fmi3EnterInitializationMode", False, 0.0, 0.0, False, 0.0) == 0
+    assert fmi3.set({"q0": [0.0, 3.0, 0.0, -4.0]}) == 0
+    assert list(fmi3.get(["q"])["q"]) == [0.0, 0.6, 0.0, -0.8]
+    assert fmi3.call("fmi3ExitInitializationMode") == 0
+    assert fmi3.set({"omega": [2.0, 0.0, 0.0]}) == 0
+    assert fmi3.do_step(0.0, 0.5)[0] == 0
+    q3 = list(fmi3.get(["q"])["q"])
+    assert q3 != [0.0, 0.6, 0.0, -0.8] and q3 == list(fmi2.get(Q))
