@@ -8,9 +8,9 @@
 #      timings are noisy);
 #   3. the fmpy comparison (bench/fmpy_bench.py): simulate_fmu with AngularKinematics vs. the
 #      pass-through FMU;
-#   4. AttitudePropagator (bench/bench_attitude.c): set omega + fmi2DoStep + get q (and theta)
-#      vs. the bare quaternion update (and the update + angle extraction), over the largest step
-#      count of --steps.
+#   4. AttitudePropagator (bench/bench_attitude.c): set omega + doStep + get q (and theta), FMI 2
+#      and FMI 3, vs. the bare quaternion update (and the update + angle extraction), frozen
+#      copies in bench/attitude_anchor.c, over the largest step count of --steps.
 # The anchors every ratio is to do not move with the FMU (issue 24): the hand-written 1-2-3
 # formula (tests/c/kinematics_123.c) and the bare quaternion update; the general core is a figure
 # of its own. Unless --quick or --no-previous, the previous release's binaries
@@ -66,12 +66,14 @@ fmu_so=build/fmu/binaries/linux64/AngularKinematics.so
 fmu3_so=build/fmu3/binaries/x86_64-linux/AngularKinematics.so
 driver=build/bench/bench_fmu
 ap_so=build/fmu/binaries/linux64/AttitudePropagator.so
+ap3_so=build/fmu3/binaries/x86_64-linux/AttitudePropagator.so
 previous_fmi3=() previous_ap=()
 if [ "$previous" = yes ]; then
   previous_build=$(bash bench/previous_release.sh)/build
   previous_fmi3=("$previous_build/fmu/binaries/linux64/AngularKinematics.so"
                  "$previous_build/fmu3/binaries/x86_64-linux/AngularKinematics.so")
-  previous_ap=(--previous "$previous_build/fmu/binaries/linux64/AttitudePropagator.so")
+  previous_ap=(--previous "$previous_build/fmu/binaries/linux64/AttitudePropagator.so"
+               --previous3 "$previous_build/fmu3/binaries/x86_64-linux/AttitudePropagator.so")
 fi
 
 # The calls in one function of a binary, counted: "sincos@plt x3, ...".
@@ -123,7 +125,7 @@ instruction_table() {
 
 callgrind_table() {
   local fmu=("$driver" "$fmu_so") fmi3=(build/bench/bench_fmi3 "$fmu_so" "$fmu3_so")
-  local ap=(build/bench/bench_attitude "$ap_so" --steps STEPS --only)
+  local ap=(build/bench/bench_attitude "$ap_so" --fmi3 "$ap3_so" --steps STEPS --only)
   instruction_table \
     "Instructions per step under valgrind --tool=callgrind (exact, independent of machine load):" \
     "anchor: hand-written 1-2-3 formula|$(instructions_per_step "${fmu[@]}" --only anchor \
@@ -146,12 +148,17 @@ callgrind_table() {
     "general core, body123, inlined|$(instructions_per_step "${fmi3[@]}" STEPS 1 core)" "${rows[@]}"
   echo
   rows=("update + angles of body123|$(instructions_per_step "${ap[@]}" angles)"
-    "FMU: set omega + doStep + get q|$(instructions_per_step "${ap[@]}" q)"
-    "FMU: set omega + doStep + get q, theta|$(instructions_per_step "${ap[@]}" q+theta)")
+    "FMI 2: set omega + doStep + get q|$(instructions_per_step "${ap[@]}" q)"
+    "FMI 2: set omega + doStep + get q, theta|$(instructions_per_step "${ap[@]}" q+theta)"
+    "FMI 3: set omega + doStep + get q|$(instructions_per_step "${ap[@]}" q3)"
+    "FMI 3: set omega + doStep + get q, theta|$(instructions_per_step "${ap[@]}" q+theta3)")
   if [ ${#previous_ap[@]} -gt 0 ]; then
-    local old_ap=(build/bench/bench_attitude "${previous_ap[1]}" --steps STEPS --only)
-    rows+=("previous release: get q|$(instructions_per_step "${old_ap[@]}" q)"
-      "previous release: get q, theta|$(instructions_per_step "${old_ap[@]}" q+theta)")
+    local old_ap=(build/bench/bench_attitude "${previous_ap[1]}" --fmi3 "${previous_ap[3]}"
+      --steps STEPS --only)
+    rows+=("previous release, FMI 2: get q|$(instructions_per_step "${old_ap[@]}" q)"
+      "previous release, FMI 2: get q, theta|$(instructions_per_step "${old_ap[@]}" q+theta)"
+      "previous release, FMI 3: get q|$(instructions_per_step "${old_ap[@]}" q3)"
+      "previous release, FMI 3: get q, theta|$(instructions_per_step "${old_ap[@]}" q+theta3)")
   fi
   instruction_table "AttitudePropagator against the bare quaternion update:" \
     "anchor: bare quaternion update|$(instructions_per_step "${ap[@]}" bare)" "${rows[@]}"
@@ -176,6 +183,6 @@ callgrind_table() {
     --repeats "$fmpy_repeats"
   echo
   # AttitudePropagator (bench/bench_attitude.c): one CS step beside the bare quaternion update.
-  build/bench/bench_attitude build/fmu/binaries/linux64/AttitudePropagator.so \
+  build/bench/bench_attitude "$ap_so" --fmi3 "$ap3_so" \
     --steps "${steps##*,}" --repeats "$repeats" "${previous_ap[@]}"
 } | tee build/last-run.md

@@ -138,7 +138,9 @@ bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double 
     double moved = 0.0;
     for (int k = 0; k < 4; k++) {
         const double corrected = next[k] * factor;
-        moved += (corrected - next[k]) * (corrected - next[k]);
+        if (correction != NULL) { /* its size only when asked: the step itself does not need it */
+            moved += (corrected - next[k]) * (corrected - next[k]);
+        }
         next[k] = corrected;
     }
     for (int k = 0; k < 4; k++) {

@@ -42,7 +42,8 @@ VARIABLES = [
          description="unit quaternion of the attitude, component {i} (scalar first, Hamilton "
                      "product; continuous in time, its sign is not normalized); continuous state",
          depends=lambda i: [f"q[{i}]"]),
-    dict(name="der(q)", vr=10, shape=(4,), causality="local", type="Frequency",
+    # group lazy: a get computes it (model exchange's fmi2GetDerivatives computes it itself).
+    dict(name="der(q)", vr=10, shape=(4,), causality="local", type="Frequency", group="lazy",
          derivative_of="q", description="time derivative of q[{i}]", depends=_other_q),
     dict(name="R", vr=14, shape=(3, 3), causality="output", type="Dimensionless",
          description="direction cosine matrix, row {i} column {j}: v_fixed = R v_body",

@@ -84,8 +84,8 @@ static double attitude_norm(const ak_model_data *data) {
 }
 
 /* The main group: R, theta and the distance from the states (normalized: model exchange
- * integrators let |q| drift) and the last angles computed (the reference of the unwrapping);
- * der(q). In co-simulation it waits for a read (q itself is always current): see step_angles. */
+ * integrators let |q| drift) and the last angles computed (the reference of the unwrapping). In
+ * co-simulation it waits for a read (q itself is always current): see step_angles. */
 static ak_eval_status evaluate(ak_model_data *data) {
     double *v = data->values;
     const double *q = &v[AP_VR_Q];
@@ -109,7 +109,6 @@ static ak_eval_status evaluate(ak_model_data *data) {
     v[AP_VR_SINGULARITY_DISTANCE] = distance;
     v[AP_VR_ANGLES_AGE] = 0.0;
     v[AP_VR_ANGLES_CHANGE_BOUND] = 0.0;
-    derivatives(data);
     return AK_EVAL_OK;
 }
 
@@ -164,9 +163,11 @@ static void step_angles(ak_model_data *data, const double q_new[4]) {
     v[AP_VR_ANGLES_CHANGE_BOUND] = bound <= ANGLES_CHANGE_LIMIT ? bound : 2.0 * ANGLES_CHANGE_LIMIT;
 }
 
-/* The lazy group, computed only when one of them is read: the angle rates, omega and alpha in
- * both frames, from the main group's R and theta. */
+/* The lazy group, computed only when one of them is read: der(q) (fmi2GetDerivatives computes
+ * it itself), the angle rates, omega and alpha in both frames, from the main group's R and
+ * theta. */
 static void evaluate_lazy(ak_model_data *data) {
+    derivatives(data);
     double *v = data->values;
     const ak_frame frame = frame_of(data);
     double R[3][3];
