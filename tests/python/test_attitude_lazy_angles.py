@@ -136,3 +136,29 @@ def test_q_follows_q0_until_initialization_ends_in_both_layers(make_attitude_ins
     assert fmi3.do_step(0.0, 0.5)[0] == 0
     q3 = list(fmi3.get(["q"])["q"])
     assert q3 != [0.0, 0.6, 0.0, -0.8] and q3 == list(fmi2.get(Q))
+
+
+@pytest.mark.parametrize("sequence", [1, 6, 7, 13, 18, 24])
+def test_fmi3_angles_read_rarely_are_fmi2_angles_read_at_every_step(sequence,
+                                                                     make_attitude_instance):
+    """The FMI 3 layer reads q without an evaluation too: its angles, read every 5th or 40th
+    step, are the FMI 2 FMU's read at every step, bit for bit."""
+    names = ["q", "theta", "R", "singularity_distance"]
+    for frame in ["body", "fixed"]:
+        for kind in ["tumble", "through_singular", "jumps"]:
+            dense = drive(started(make_attitude_instance, sequence, frame), 120, kind, 1, False)
+            for read_every in (5, 40):
+                fmi3 = make_attitude_instance(fmi_version=3)
+                fmi3.initialize(parameters={"sequence": sequence, "frame": FRAME[frame]})
+                for n in range(120):
+                    assert fmi3.set({"omega": omega_at(n, kind)}) == 0
+                    assert fmi3.do_step(0.05 * n, 0.05)[0] == 0
+                    read = names if (n + 1) % read_every == 0 else ["q"]
+                    values = fmi3.get(read)
+                    expected = {"q": [dense[n][name] for name in Q]}
+                    if len(read) > 1:
+                        expected["theta"] = [dense[n][name] for name in THETA]
+                        expected["singularity_distance"] = [dense[n]["singularity_distance"]]
+                        assert values["R"][2] == dense[n]["R[1,3]"]
+                    for name, value in expected.items():
+                        assert np.array(value).tobytes() == values[name].tobytes(), (n, name)
