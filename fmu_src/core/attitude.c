@@ -65,7 +65,8 @@ void ak_attitude_input_polynomial(const double w0[3], const double w1[3], const 
 }
 
 /* Omega from omega at the two Gauss points (section 4). */
-static void gauss_combination(ak_frame frame, double a[2][3], double h, double omega_vector[3]) {
+static inline void gauss_combination(ak_frame frame, double a[2][3], double h,
+                                     double omega_vector[3]) {
     const double cross[3] = {a[0][1] * a[1][2] - a[0][2] * a[1][1],
                              a[0][2] * a[1][0] - a[0][0] * a[1][2],
                              a[0][0] * a[1][1] - a[0][1] * a[1][0]};
