@@ -4,6 +4,9 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+
+#include "kinematics_sequences.h"
 
 /* The sequence as a chain of three body-fixed rotations (header, section 1). */
 typedef struct {
@@ -213,7 +216,9 @@ static inline void store_partials(const chain *ch, const chain_rates *x, double 
     }
 }
 
-/* Omega and alpha (header, sections 2, 3); body123_kinematics copies it for constant axes. */
+/* Omega and alpha (header, sections 2, 3): the general kernel. Each sequence of the table runs
+ * its own copy of it without the structurally zero terms, generated from this code
+ * (kinematics_sequences.c, codegen/sequence_kernels.py). */
 static inline void chain_kinematics(const ak_sequence *sequence, const ak_sines *sines,
                                     const double theta_dot[3], const double theta_ddot[3],
                                     double omega_fixed[3], double omega_body[3],
@@ -225,28 +230,24 @@ static inline void chain_kinematics(const ak_sequence *sequence, const ak_sines 
     combine_kinematics(&x, omega_fixed, omega_body, alpha_fixed, alpha_body);
 }
 
-/* chain_kinematics for body123 with every helper inlined, so that the compiler folds the
- * constant axes: the same arithmetic in the same order, hence the same bits. */
-#if defined(__GNUC__)
-__attribute__((flatten))
-#endif
-static void body123_kinematics(const ak_sines *sines, const double theta_dot[3],
-                               const double theta_ddot[3], double omega_fixed[3],
-                               double omega_body[3], double alpha_fixed[3], double alpha_body[3]) {
-    chain_kinematics(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], sines, theta_dot, theta_ddot,
-                     omega_fixed, omega_body, alpha_fixed, alpha_body);
+void ak_chain_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
+                                          const double theta_dot[3], const double theta_ddot[3],
+                                          double omega_fixed[3], double omega_body[3],
+                                          double alpha_fixed[3], double alpha_body[3]) {
+    chain_kinematics(sequence, sines, theta_dot, theta_ddot, omega_fixed, omega_body, alpha_fixed,
+                     alpha_body);
 }
 
 void ak_general_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
                                             const double theta_dot[3], const double theta_ddot[3],
                                             double omega_fixed[3], double omega_body[3],
                                             double alpha_fixed[3], double alpha_body[3]) {
-    /* The default sequence, the one most users run, through its own specialized copy: same
-     * arithmetic, with the axes known to the compiler (docs/performance.md: cycle / core 2.00
-     * against 2.17 without it). */
-    if (sequence == &AK_SEQUENCES[AK_SEQUENCE_DEFAULT]) {
-        body123_kinematics(sines, theta_dot, theta_ddot, omega_fixed, omega_body, alpha_fixed,
-                           alpha_body);
+    /* A sequence of the table through its generated kernel (docs/performance.md); any other
+     * (a copy, in the tests) through the general one. */
+    const uintptr_t at = (uintptr_t)sequence, first = (uintptr_t)AK_SEQUENCES;
+    if (at >= first && at < first + sizeof AK_SEQUENCES) {
+        AK_SEQUENCE_KINEMATICS[(at - first) / sizeof AK_SEQUENCES[0]](sines, theta_dot, theta_ddot, omega_fixed, omega_body,
+                                      alpha_fixed, alpha_body);
     } else {
         chain_kinematics(sequence, sines, theta_dot, theta_ddot, omega_fixed, omega_body,
                          alpha_fixed, alpha_body);
@@ -349,7 +350,8 @@ static inline void chain_rotation_outputs(const ak_sequence *sequence, const ak_
     chain_partials(&ch, theta_dot, out->W_fixed, out->W_body, out->W_fixed_dot, out->W_body_dot);
 }
 
-/* chain_rotation_outputs for body123, specialized as body123_kinematics. */
+/* chain_rotation_outputs for body123 with every helper inlined, so that the compiler folds the
+ * constant axes: the same arithmetic in the same order, hence the same bits. */
 #if defined(__GNUC__)
 __attribute__((flatten))
 #endif
