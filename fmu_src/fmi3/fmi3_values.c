@@ -360,8 +360,22 @@ AK_NOINLINE static fmi3Status set_float64_checked(ak_instance *instance,
     return fmi3OK;
 }
 
-/* fmi3SetFloat64 but the usual set of one input array: the usual sets of several arrays, then
- * each argument checked. Out of line, so that the usual path stays a small function. */
+/* True when vr names every input array, in value-reference order (so their elements are the
+ * inputs 0 .. n_inputs - 1 in order). */
+static bool every_input_array(const fmi3ValueReference vr[], size_t nvr) {
+    const unsigned int n_inputs = (unsigned int)AK_MODEL.n_inputs;
+    unsigned int next = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        if (next >= n_inputs || vr[i] != next) {
+            return false;
+        }
+        next += AK3_ARRAYS[next].n_elements;
+    }
+    return nvr > 0 && next == n_inputs;
+}
+
+/* fmi3SetFloat64 but its usual sets: the usual sets of arrays not in order, then each argument
+ * checked. Out of line, so that the usual paths stay small functions. */
 AK_NOINLINE static fmi3Status set_float64_general(ak_instance *instance,
                                                   const fmi3ValueReference vr[], size_t nvr,
                                                   const fmi3Float64 values[], size_t nValues) {
@@ -384,6 +398,27 @@ AK_NOINLINE static fmi3Status set_float64_general(ak_instance *instance,
     return set_float64_checked(instance, vr, nvr, values, nValues);
 }
 
+/* The other usual set, every input array at once in value-reference order, untraced; anything
+ * else goes on to set_float64_general. Out of line and small: the one-vector path stays short. */
+AK_NOINLINE static fmi3Status set_every_input(ak_instance *instance, const fmi3ValueReference vr[],
+                                              size_t nvr, const fmi3Float64 values[],
+                                              size_t nValues) {
+    /* The other usual set: every input array at once, in value-reference order, untraced. */
+    if (untraced_call_allowed(instance, AK3_SET_FLOAT64) && vr != NULL && values != NULL &&
+        nValues == (size_t)AK_MODEL.n_inputs && every_input_array(vr, nvr) &&
+        !instance->data.any_input_derivative) {
+        const ak_store_result stored =
+            ak_store_if_finite(instance->data.values, values, (size_t)AK_MODEL.n_inputs);
+        if (stored == AK_STORE_CHANGED) {
+            ak_instance_inputs_changed(instance);
+        }
+        if (stored != AK_STORE_REFUSED) {
+            return fmi3OK;
+        }
+    }
+    return set_float64_general(instance, vr, nvr, values, nValues);
+}
+
 fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Float64 values[], size_t nValues) {
     ak_instance *instance = c;
@@ -400,7 +435,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
             return fmi3OK;
         }
     }
-    return set_float64_general(instance, vr, nvr, values, nValues);
+    return set_every_input(instance, vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
