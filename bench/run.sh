@@ -138,7 +138,9 @@ callgrind_table() {
     "get 12, no input changed|$(instructions_per_step "${fmu[@]}" --only get --steps STEPS)"
   echo
   local rows=("FMI 2: set 9 + doStep + get 12|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi2)"
-    "FMI 3: 3 sets of 3 + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi3)")
+    "FMI 3: 3 sets of 3 + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi3)"
+    "FMI 3: one set of the 3 arrays + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" \
+      STEPS 1 fmi3-one-set)")
   if [ ${#previous_fmi3[@]} -gt 0 ]; then
     local old=(build/bench/bench_fmi3 "${previous_fmi3[@]}")
     rows+=("previous release, FMI 2 cycle|$(instructions_per_step "${old[@]}" STEPS 1 fmi2)"
