@@ -249,8 +249,8 @@ void ak_general_angular_kinematics_of_sines(const ak_sequence *sequence, const a
         AK_SEQUENCE_KINEMATICS[(at - first) / sizeof AK_SEQUENCES[0]](sines, theta_dot, theta_ddot, omega_fixed, omega_body,
                                       alpha_fixed, alpha_body);
     } else {
-        chain_kinematics(sequence, sines, theta_dot, theta_ddot, omega_fixed, omega_body,
-                         alpha_fixed, alpha_body);
+        ak_chain_angular_kinematics_of_sines(sequence, sines, theta_dot, theta_ddot, omega_fixed,
+                                             omega_body, alpha_fixed, alpha_body);
     }
 }
 

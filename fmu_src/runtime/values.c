@@ -323,18 +323,9 @@ AK_NOINLINE static ak_status set_reals_checked(ak_instance *instance, const ak_f
     const bool plain_store = !trace && !instance->data.any_input_derivative;
     /* The usual set of an importer: the first nvr inputs in value-reference order. */
     if (plain_store && nvr > 0 && nvr <= (size_t)AK_MODEL.n_inputs &&
-        memcmp(vr, EVERY_VALUE_REFERENCE, nvr * sizeof vr[0]) == 0) {
-        /* Every input (the usual count, a constant: the check and copy unrolled) or fewer. */
-        const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
-        const ak_store_result stored =
-            nvr == n_inputs ? ak_store_if_finite(instance->data.values, value, n_inputs)
-                            : ak_store_if_finite(instance->data.values, value, nvr);
-        if (stored == AK_STORE_CHANGED) {
-            ak_instance_inputs_changed(instance);
-        }
-        if (stored != AK_STORE_REFUSED) {
-            return AK_STATUS_OK;
-        }
+        memcmp(vr, EVERY_VALUE_REFERENCE, nvr * sizeof vr[0]) == 0 &&
+        ak_store_inputs(instance, 0, value, nvr, (size_t)AK_MODEL.n_inputs)) {
+        return AK_STATUS_OK;
     }
     const bool usual = only_finite_inputs(vr, nvr, value);
     if (!usual && !check_each_real(instance, function, vr, nvr, value)) {
