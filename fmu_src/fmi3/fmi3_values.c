@@ -184,8 +184,8 @@ static void store_all(ak_instance *instance, const fmi3ValueReference vr[], size
     }
 }
 
-/* fmi3GetFloat64 but the usual get of main outputs in one run: each argument checked. Out of
- * line, so that the usual path stays a small function. */
+/* fmi3GetFloat64 but its usual get (output arrays in one run, untraced): each argument checked.
+ * Out of line, so that the usual path stays a small function. */
 AK_NOINLINE static fmi3Status get_float64_checked(ak_instance *instance,
                                                   const fmi3ValueReference vr[], size_t nvr,
                                                   fmi3Float64 values[], size_t nValues) {
@@ -403,7 +403,6 @@ AK_NOINLINE static fmi3Status set_float64_general(ak_instance *instance,
 AK_NOINLINE static fmi3Status set_every_input(ak_instance *instance, const fmi3ValueReference vr[],
                                               size_t nvr, const fmi3Float64 values[],
                                               size_t nValues) {
-    /* The other usual set: every input array at once, in value-reference order, untraced. */
     if (untraced_call_allowed(instance, AK3_SET_FLOAT64) && vr != NULL && values != NULL &&
         nValues == (size_t)AK_MODEL.n_inputs && every_input_array(vr, nvr) &&
         !instance->data.any_input_derivative) {
