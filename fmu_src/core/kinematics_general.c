@@ -478,7 +478,7 @@ ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame fra
         pdd[m] = dot(rows[m], rhs);
     }
 
-    ak_general_rotation_matrix(sequence, theta, R);
+    chain_rotation_matrix(&ch, R); /* the chain's sines: no second sin and cos of theta */
     double other[3];
     for (int r = 0; r < 3; r++) {
         other[r] = body ? R[r][0] * omega_dot[0] + R[r][1] * omega_dot[1] + R[r][2] * omega_dot[2]
