@@ -152,18 +152,24 @@ static inline void chain_cross_products(const chain *ch, cross_products *x) {
     rotate_chain_back(ch, 2, 2, x->v23);
 }
 
+/* The axis rates from the cross products x of the chain. */
+static inline void axis_rates_of(const cross_products *x, const double phi_dot[3],
+                                 double du[3][3], double dv[3][3]) {
+    for (int r = 0; r < 3; r++) {
+        du[0][r] = 0.0;
+        du[1][r] = phi_dot[0] * x->u12[r];
+        du[2][r] = phi_dot[0] * x->u13[r] + phi_dot[1] * x->u23[r];
+        dv[0][r] = phi_dot[1] * x->v12[r] + phi_dot[2] * x->v13[r];
+        dv[1][r] = phi_dot[2] * x->v23[r];
+        dv[2][r] = 0.0;
+    }
+}
+
 static inline void chain_axis_rates(const chain *ch, const double phi_dot[3], double du[3][3],
                              double dv[3][3]) {
     cross_products x;
     chain_cross_products(ch, &x);
-    for (int r = 0; r < 3; r++) {
-        du[0][r] = 0.0;
-        du[1][r] = phi_dot[0] * x.u12[r];
-        du[2][r] = phi_dot[0] * x.u13[r] + phi_dot[1] * x.u23[r];
-        dv[0][r] = phi_dot[1] * x.v12[r] + phi_dot[2] * x.v13[r];
-        dv[1][r] = phi_dot[2] * x.v23[r];
-        dv[2][r] = 0.0;
-    }
+    axis_rates_of(&x, phi_dot, du, dv);
 }
 
 static inline void to_chain_order(const chain *ch, const double x[3], double out[3]) {
@@ -469,7 +475,7 @@ ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame fra
     for (int m = 0; m < 3; m++) {
         pd[m] = dot(rows[m], omega);
     }
-    chain_axis_rates(&ch, pd, du, dv);
+    axis_rates_of(&x, pd, du, dv); /* the cross products above: not computed twice */
     for (int r = 0; r < 3; r++) {
         double (*rate)[3] = body ? dv : du;
         rhs[r] = omega_dot[r] - (pd[0] * rate[0][r] + pd[1] * rate[1][r] + pd[2] * rate[2][r]);
