@@ -8,7 +8,9 @@
 #      timings are noisy);
 #   3. the fmpy comparison (bench/fmpy_bench.py): simulate_fmu with AngularKinematics vs. the
 #      pass-through FMU;
-#   4. AttitudePropagator (bench/bench_attitude.c): set omega + doStep + get q (and theta), FMI 2
+#   4. each of the 24 sequences against its own anchor and every output against the all-outputs
+#      anchor (bench/bench_sequences_fmu.c), in time and, with callgrind, in instructions;
+#   5. AttitudePropagator (bench/bench_attitude.c): set omega + doStep + get q (and theta), FMI 2
 #      and FMI 3, vs. the bare quaternion update (and the update + angle extraction), frozen
 #      copies in bench/attitude_anchor.c, over the largest step count of --steps.
 # The anchors every ratio is to do not move with the FMU (issue 24): the hand-written 1-2-3
@@ -40,10 +42,11 @@ fmpy_repeats=5
 callgrind=yes
 previous=yes
 fmi3_steps=1e6 # per run of bench/bench_fmi3.c (--quick: 1e5)
+sequence_steps=2e5 # per loop of bench/bench_sequences_fmu.c (--quick: 2e4)
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) steps=1e3,1e4,1e5; repeats=3; calls=1e5; fmpy_steps=2000; fmpy_repeats=3
-             callgrind=no; fmi3_steps=1e5; previous=no ;;
+             callgrind=no; fmi3_steps=1e5; sequence_steps=2e4; previous=no ;;
     --steps) steps="$2"; shift ;;
     --repeats) repeats="$2"; shift ;;
     --calls) calls="$2"; shift ;;
@@ -137,7 +140,9 @@ callgrind_table() {
     "get 12, no input changed|$(instructions_per_step "${fmu[@]}" --only get --steps STEPS)"
   echo
   local rows=("FMI 2: set 9 + doStep + get 12|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi2)"
-    "FMI 3: 3 sets of 3 + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi3)")
+    "FMI 3: 3 sets of 3 + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi3)"
+    "FMI 3: one set of the 3 arrays + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" \
+      STEPS 1 fmi3-one-set)")
   if [ ${#previous_fmi3[@]} -gt 0 ]; then
     local old=(build/bench/bench_fmi3 "${previous_fmi3[@]}")
     rows+=("previous release, FMI 2 cycle|$(instructions_per_step "${old[@]}" STEPS 1 fmi2)"
@@ -164,6 +169,32 @@ callgrind_table() {
     "anchor: bare quaternion update|$(instructions_per_step "${ap[@]}" bare)" "${rows[@]}"
 }
 
+# Each sequence's FMI 2 cycle against its own anchor (bench/anchors_sequences.c), and the cycle
+# reading every output against the all-outputs anchor: instructions per step, with short runs
+# (2560 and 12800 steps, whole turns of the input table) to keep the 50 valgrind runs brief.
+sequence_callgrind_table() {
+  local run=(build/bench/bench_sequences_fmu "$fmu_so" --steps STEPS --only) k a c
+  echo "Every sequence, instructions per step: its FMI 2 cycle (set 9 + doStep + get 12) against"
+  echo "its anchor, the closed-form formula of bench/anchors_sequences.c:"
+  echo
+  echo "| sequence | anchor | cycle | cycle / anchor |"
+  echo "|---|---:|---:|---:|"
+  for k in $(seq 1 24); do
+    a=$(AK_SMALL_STEPS=2560 AK_LARGE_STEPS=12800 instructions_per_step "${run[@]}" anchor "$k")
+    c=$(AK_SMALL_STEPS=2560 AK_LARGE_STEPS=12800 instructions_per_step "${run[@]}" cycle "$k")
+    awk -v k="$k" -v a="$a" -v c="$c" 'BEGIN {
+      split("123 132 213 231 312 321 121 131 212 232 313 323", o, " ")
+      printf "| %s%s | %d | %d | %.2f |\n", k <= 12 ? "body" : "space", o[(k - 1) % 12 + 1], a, c,
+        c / a }'
+  done
+  echo
+  a=$(AK_SMALL_STEPS=2560 AK_LARGE_STEPS=12800 instructions_per_step "${run[@]}" all-anchor 1)
+  c=$(AK_SMALL_STEPS=2560 AK_LARGE_STEPS=12800 instructions_per_step "${run[@]}" all 1)
+  instruction_table "Every output (body123), instructions per step:" \
+    "anchor: all outputs from the core's functions, no FMI|$a" \
+    "set 9 + doStep + get every output|$c"
+}
+
 {
   echo "## AngularKinematics benchmark (bash bench/run.sh${arguments:+ $arguments})"
   echo
@@ -174,8 +205,13 @@ callgrind_table() {
   # The FMI 3 cycle beside the FMI 2 cycle and the core, alternately (bench/bench_fmi3.c).
   build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" "$fmi3_steps" "$repeats" all "${previous_fmi3[@]}"
   echo
+  # Every sequence against its own anchor; every output against the all-outputs anchor.
+  build/bench/bench_sequences_fmu "$fmu_so" --steps "$sequence_steps" --repeats "$repeats"
+  echo
   if [ "$callgrind" = yes ] && command -v valgrind >/dev/null 2>&1; then
     callgrind_table
+    echo
+    sequence_callgrind_table
     echo
   fi
   .venv/bin/python bench/fmpy_bench.py --fmu dist/AngularKinematics.fmu \

@@ -4,11 +4,13 @@ set(AK_MODELS AngularKinematics EulerRates AttitudePropagator)
 set(AK_CORE_SOURCES
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
   fmu_src/core/attitude.c)
 set(AK_CORE_HEADERS
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
+  fmu_src/core/kinematics_sequences.h
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude.h)
 set(AK_MODEL_COMMON_SOURCES

@@ -65,9 +65,9 @@ ENUMERATIONS = {
 }
 
 # Sources, relative to fmu_src/, in the order they are compiled and listed in <SourceFiles>.
-CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c",
+CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_sequences.c",
                 "core/kinematics_general_jacobian.c", "core/attitude.c"]
-CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h",
+CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h", "core/kinematics_sequences.h",
                 "core/kinematics_general_jacobian.h", "core/attitude.h"]
 # The FMI runtime under both FMI layers (fmu_src/runtime/), FMI-independent.
 RUNTIME_SOURCES = ["runtime/instance.c", "runtime/outputs.c", "runtime/lifecycle.c",

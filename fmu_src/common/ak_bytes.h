@@ -54,7 +54,9 @@ static inline ak_store_result ak_store_if_finite(double *dst, const double *src,
     if ((not_finite >> 63) != 0) {
         return AK_STORE_REFUSED;
     }
-    memcpy(dst, src, n * sizeof *dst);
+    for (size_t i = 0; i < n; i++) { /* not memcpy: gcc may make that a slow rep movs */
+        dst[i] = src[i];
+    }
     return changed != 0 ? AK_STORE_CHANGED : AK_STORE_SAME;
 }
 

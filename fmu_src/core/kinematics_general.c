@@ -4,6 +4,9 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+
+#include "kinematics_sequences.h"
 
 /* The sequence as a chain of three body-fixed rotations (header, section 1). */
 typedef struct {
@@ -149,18 +152,24 @@ static inline void chain_cross_products(const chain *ch, cross_products *x) {
     rotate_chain_back(ch, 2, 2, x->v23);
 }
 
+/* The axis rates from the cross products x of the chain. */
+static inline void axis_rates_of(const cross_products *x, const double phi_dot[3],
+                                 double du[3][3], double dv[3][3]) {
+    for (int r = 0; r < 3; r++) {
+        du[0][r] = 0.0;
+        du[1][r] = phi_dot[0] * x->u12[r];
+        du[2][r] = phi_dot[0] * x->u13[r] + phi_dot[1] * x->u23[r];
+        dv[0][r] = phi_dot[1] * x->v12[r] + phi_dot[2] * x->v13[r];
+        dv[1][r] = phi_dot[2] * x->v23[r];
+        dv[2][r] = 0.0;
+    }
+}
+
 static inline void chain_axis_rates(const chain *ch, const double phi_dot[3], double du[3][3],
                              double dv[3][3]) {
     cross_products x;
     chain_cross_products(ch, &x);
-    for (int r = 0; r < 3; r++) {
-        du[0][r] = 0.0;
-        du[1][r] = phi_dot[0] * x.u12[r];
-        du[2][r] = phi_dot[0] * x.u13[r] + phi_dot[1] * x.u23[r];
-        dv[0][r] = phi_dot[1] * x.v12[r] + phi_dot[2] * x.v13[r];
-        dv[1][r] = phi_dot[2] * x.v23[r];
-        dv[2][r] = 0.0;
-    }
+    axis_rates_of(&x, phi_dot, du, dv);
 }
 
 static inline void to_chain_order(const chain *ch, const double x[3], double out[3]) {
@@ -213,7 +222,9 @@ static inline void store_partials(const chain *ch, const chain_rates *x, double 
     }
 }
 
-/* Omega and alpha (header, sections 2, 3); body123_kinematics copies it for constant axes. */
+/* Omega and alpha (header, sections 2, 3): the general kernel. Each sequence of the table runs
+ * its own copy of it without the structurally zero terms, generated from this code
+ * (kinematics_sequences.c, codegen/sequence_kernels.py). */
 static inline void chain_kinematics(const ak_sequence *sequence, const ak_sines *sines,
                                     const double theta_dot[3], const double theta_ddot[3],
                                     double omega_fixed[3], double omega_body[3],
@@ -225,31 +236,27 @@ static inline void chain_kinematics(const ak_sequence *sequence, const ak_sines 
     combine_kinematics(&x, omega_fixed, omega_body, alpha_fixed, alpha_body);
 }
 
-/* chain_kinematics for body123 with every helper inlined, so that the compiler folds the
- * constant axes: the same arithmetic in the same order, hence the same bits. */
-#if defined(__GNUC__)
-__attribute__((flatten))
-#endif
-static void body123_kinematics(const ak_sines *sines, const double theta_dot[3],
-                               const double theta_ddot[3], double omega_fixed[3],
-                               double omega_body[3], double alpha_fixed[3], double alpha_body[3]) {
-    chain_kinematics(&AK_SEQUENCES[AK_SEQUENCE_DEFAULT], sines, theta_dot, theta_ddot,
-                     omega_fixed, omega_body, alpha_fixed, alpha_body);
+void ak_chain_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
+                                          const double theta_dot[3], const double theta_ddot[3],
+                                          double omega_fixed[3], double omega_body[3],
+                                          double alpha_fixed[3], double alpha_body[3]) {
+    chain_kinematics(sequence, sines, theta_dot, theta_ddot, omega_fixed, omega_body, alpha_fixed,
+                     alpha_body);
 }
 
 void ak_general_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
                                             const double theta_dot[3], const double theta_ddot[3],
                                             double omega_fixed[3], double omega_body[3],
                                             double alpha_fixed[3], double alpha_body[3]) {
-    /* The default sequence, the one most users run, through its own specialized copy: same
-     * arithmetic, with the axes known to the compiler (docs/performance.md: cycle / core 2.00
-     * against 2.17 without it). */
-    if (sequence == &AK_SEQUENCES[AK_SEQUENCE_DEFAULT]) {
-        body123_kinematics(sines, theta_dot, theta_ddot, omega_fixed, omega_body, alpha_fixed,
-                           alpha_body);
+    /* A sequence of the table through its generated kernel (docs/performance.md); any other
+     * (a copy, in the tests) through the general one. */
+    const uintptr_t at = (uintptr_t)sequence, first = (uintptr_t)AK_SEQUENCES;
+    if (at >= first && at < first + sizeof AK_SEQUENCES) {
+        AK_SEQUENCE_KINEMATICS[(at - first) / sizeof AK_SEQUENCES[0]](sines, theta_dot, theta_ddot, omega_fixed, omega_body,
+                                      alpha_fixed, alpha_body);
     } else {
-        chain_kinematics(sequence, sines, theta_dot, theta_ddot, omega_fixed, omega_body,
-                         alpha_fixed, alpha_body);
+        ak_chain_angular_kinematics_of_sines(sequence, sines, theta_dot, theta_ddot, omega_fixed,
+                                             omega_body, alpha_fixed, alpha_body);
     }
 }
 
@@ -349,7 +356,8 @@ static inline void chain_rotation_outputs(const ak_sequence *sequence, const ak_
     chain_partials(&ch, theta_dot, out->W_fixed, out->W_body, out->W_fixed_dot, out->W_body_dot);
 }
 
-/* chain_rotation_outputs for body123, specialized as body123_kinematics. */
+/* chain_rotation_outputs for body123 with every helper inlined, so that the compiler folds the
+ * constant axes: the same arithmetic in the same order, hence the same bits. */
 #if defined(__GNUC__)
 __attribute__((flatten))
 #endif
@@ -467,7 +475,7 @@ ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame fra
     for (int m = 0; m < 3; m++) {
         pd[m] = dot(rows[m], omega);
     }
-    chain_axis_rates(&ch, pd, du, dv);
+    axis_rates_of(&x, pd, du, dv); /* the cross products above: not computed twice */
     for (int r = 0; r < 3; r++) {
         double (*rate)[3] = body ? dv : du;
         rhs[r] = omega_dot[r] - (pd[0] * rate[0][r] + pd[1] * rate[1][r] + pd[2] * rate[2][r]);
@@ -476,7 +484,7 @@ ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame fra
         pdd[m] = dot(rows[m], rhs);
     }
 
-    ak_general_rotation_matrix(sequence, theta, R);
+    chain_rotation_matrix(&ch, R); /* the chain's sines: no second sin and cos of theta */
     double other[3];
     for (int r = 0; r < 3; r++) {
         other[r] = body ? R[r][0] * omega_dot[0] + R[r][1] * omega_dot[1] + R[r][2] * omega_dot[2]

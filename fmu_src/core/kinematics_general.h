@@ -122,6 +122,14 @@ void ak_general_angular_kinematics_of_sines(const ak_sequence *sequence, const a
                                             double omega_fixed[3], double omega_body[3],
                                             double alpha_fixed[3], double alpha_body[3]);
 
+/* The same by the general chain formulation for any sequence, which the function above runs
+ * only for a sequence outside AK_SEQUENCES: the reference the generated kernels are checked
+ * against (tests/c/test_sequence_kernels.c). */
+void ak_chain_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
+                                          const double theta_dot[3], const double theta_ddot[3],
+                                          double omega_fixed[3], double omega_body[3],
+                                          double alpha_fixed[3], double alpha_body[3]);
+
 /* Every orientation output at once, as the functions below give them one by one. */
 typedef struct {
     double R[3][3];

@@ -184,9 +184,11 @@ static void store_all(ak_instance *instance, const fmi3ValueReference vr[], size
     }
 }
 
-fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
-                          fmi3Float64 values[], size_t nValues) {
-    ak_instance *instance = c;
+/* fmi3GetFloat64 but its usual get (output arrays in one run, untraced): each argument checked.
+ * Out of line, so that the usual path stays a small function. */
+AK_NOINLINE static fmi3Status get_float64_checked(ak_instance *instance,
+                                                  const fmi3ValueReference vr[], size_t nvr,
+                                                  fmi3Float64 values[], size_t nValues) {
     const char *self = fmi3_name(AK3_GET_FLOAT64);
     if (!fmi3_allowed(instance, AK3_GET_FLOAT64) ||
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
@@ -239,6 +241,61 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     }
     copy_out(instance, vr, nvr, values);
     return status;
+}
+
+/* True for a call the state table allows, untraced: the usual paths' check, which logs nothing
+ * (a call it does not pass takes the checked path, which logs why it is refused). */
+static inline bool untraced_call_allowed(const ak_instance *instance, ak3_function function) {
+    return instance != NULL &&
+           (FMI3_RULES[function].allowed_states & (unsigned int)instance->state) != 0 &&
+           FMI3_RULES[function].interfaces == (AK_MODEL_EXCHANGE | AK_CO_SIMULATION) &&
+           !ak_log_on(instance, AK_LOG_CALLS);
+}
+
+/* True when vr, nvr, nValues are those of the kept usual get. */
+static bool same_get(const ak3_kept_get *kept, const fmi3ValueReference vr[], size_t nvr,
+                     size_t n_values) {
+    if (nvr != kept->nvr || n_values != kept->n_values) {
+        return false;
+    }
+    unsigned int differ = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        differ |= vr[i] ^ kept->vr[i];
+    }
+    return differ == 0;
+}
+
+/* True for the usual get of every communication point: output arrays that follow each other,
+ * all of their elements (1 <= nvr <= AK3_KEPT_GET_ARRAYS), kept for the next call. */
+static bool usual_get_kept(ak3_kept_get *kept, const fmi3ValueReference vr[], size_t nvr,
+                           size_t n_values) {
+    if (same_get(kept, vr, nvr, n_values)) {
+        return true;
+    }
+    ak_group upto;
+    bool one_run;
+    if (!usual_get(vr, nvr, n_values, &upto, &one_run) || !one_run) {
+        return false;
+    }
+    memcpy(kept->vr, vr, nvr * sizeof vr[0]);
+    kept->nvr = nvr;
+    kept->n_values = n_values;
+    kept->upto = upto;
+    return true;
+}
+
+fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                          fmi3Float64 values[], size_t nValues) {
+    fmi3_instance *self = c;
+    ak_instance *instance = c;
+    if (untraced_call_allowed(instance, AK3_GET_FLOAT64) && vr != NULL && values != NULL &&
+        nvr > 0 && nvr <= AK3_KEPT_GET_ARRAYS &&
+        usual_get_kept(&self->last_get, vr, nvr, nValues)) {
+        const fmi3Status status = fmi3_status(ak_instance_update(instance, self->last_get.upto));
+        memcpy(values, &instance->data.values[vr[0]], nValues * sizeof values[0]);
+        return status;
+    }
+    return get_float64_checked(instance, vr, nvr, values, nValues);
 }
 
 /* fmi3SetFloat64 of anything but the usual set: each argument checked and a bad one named. Out
@@ -309,9 +366,25 @@ AK_NOINLINE static fmi3Status set_float64_checked(ak_instance *instance,
     return fmi3OK;
 }
 
-fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
-                          const fmi3Float64 values[], size_t nValues) {
-    ak_instance *instance = c;
+/* True when vr names every input array, in value-reference order (so their elements are the
+ * inputs 0 .. n_inputs - 1 in order). */
+static bool every_input_array(const fmi3ValueReference vr[], size_t nvr) {
+    const unsigned int n_inputs = (unsigned int)AK_MODEL.n_inputs;
+    unsigned int next = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        if (next >= n_inputs || vr[i] != next) {
+            return false;
+        }
+        next += AK3_ARRAYS[next].n_elements;
+    }
+    return nvr > 0 && next == n_inputs;
+}
+
+/* fmi3SetFloat64 but its usual sets: the usual sets of arrays not in order, then each argument
+ * checked. Out of line, so that the usual paths stay small functions. */
+AK_NOINLINE static fmi3Status set_float64_general(ak_instance *instance,
+                                                  const fmi3ValueReference vr[], size_t nvr,
+                                                  const fmi3Float64 values[], size_t nValues) {
     const char *self = fmi3_name(AK3_SET_FLOAT64);
     if (!fmi3_allowed(instance, AK3_SET_FLOAT64) ||
         !arguments_given(instance, self, nvr, vr, nValues, values)) {
@@ -329,6 +402,45 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         }
     }
     return set_float64_checked(instance, vr, nvr, values, nValues);
+}
+
+/* The other usual set, every input array at once in value-reference order, untraced; anything
+ * else goes on to set_float64_general. Out of line and small: the one-vector path stays short. */
+AK_NOINLINE static fmi3Status set_every_input(ak_instance *instance, const fmi3ValueReference vr[],
+                                              size_t nvr, const fmi3Float64 values[],
+                                              size_t nValues) {
+    if (untraced_call_allowed(instance, AK3_SET_FLOAT64) && vr != NULL && values != NULL &&
+        nValues == (size_t)AK_MODEL.n_inputs && every_input_array(vr, nvr) &&
+        !instance->data.any_input_derivative) {
+        const ak_store_result stored =
+            ak_store_if_finite(instance->data.values, values, (size_t)AK_MODEL.n_inputs);
+        if (stored == AK_STORE_CHANGED) {
+            ak_instance_inputs_changed(instance);
+        }
+        if (stored != AK_STORE_REFUSED) {
+            return fmi3OK;
+        }
+    }
+    return set_float64_general(instance, vr, nvr, values, nValues);
+}
+
+fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                          const fmi3Float64 values[], size_t nValues) {
+    ak_instance *instance = c;
+    /* The usual set of every communication point: one input vector of 3, all of it, untraced;
+     * stored if every value is finite (else the general path names the bad one). */
+    if (untraced_call_allowed(instance, AK3_SET_FLOAT64) && nvr == 1 && vr != NULL &&
+        values != NULL && nValues == 3 && vr[0] < (fmi3ValueReference)AK_MODEL.n_inputs &&
+        AK3_ARRAYS[vr[0]].first_vr == vr[0] && AK3_ARRAYS[vr[0]].n_elements == 3) {
+        const ak_store_result stored = ak_store_if_finite(&instance->data.values[vr[0]], values, 3);
+        if (stored == AK_STORE_CHANGED) {
+            ak_instance_inputs_changed(instance);
+        }
+        if (stored != AK_STORE_REFUSED) {
+            return fmi3OK;
+        }
+    }
+    return set_every_input(instance, vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,

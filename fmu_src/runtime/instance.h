@@ -162,16 +162,21 @@ bool ak_call_checked(const ak_instance *instance, const ak_function_rule *rule);
 /* The check at the top of every entry point taking an instance: false for NULL (nothing can be
  * logged then), a function of the other interface or a state not allowed (both logged). Inline,
  * so that a legal call with the trace off costs two mask tests and no call. */
+static inline bool ak_call_passes(const ak_instance *instance, const ak_function_rule *rule);
 static inline bool ak_call_allowed(const ak_instance *instance, const ak_function_rule *rule) {
+    return ak_call_passes(instance, rule) || ak_call_checked(instance, rule);
+}
+
+/* The test of ak_call_allowed alone: true for a legal call with the trace off, and nothing logged
+ * either way (the usual paths of the getters and setters; a call it refuses takes their checked
+ * path, which logs). */
+static inline bool ak_call_passes(const ak_instance *instance, const ak_function_rule *rule) {
     /* A function of both interfaces (most) needs no interface test: with the table a constant,
      * the compiler drops it. */
     const bool both = rule->interfaces == (AK_MODEL_EXCHANGE | AK_CO_SIMULATION);
-    if (instance != NULL && (rule->allowed_states & (unsigned int)instance->state) != 0 &&
-        (both || (rule->interfaces & (unsigned int)instance->interface) != 0) &&
-        !ak_log_on(instance, AK_LOG_CALLS)) {
-        return true;
-    }
-    return ak_call_checked(instance, rule);
+    return instance != NULL && (rule->allowed_states & (unsigned int)instance->state) != 0 &&
+           (both || (rule->interfaces & (unsigned int)instance->interface) != 0) &&
+           !ak_log_on(instance, AK_LOG_CALLS);
 }
 
 /* Makes a new instance of an embedding layer instance whose own fields (the callbacks its

@@ -173,8 +173,28 @@ bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int
     return false;
 }
 
-ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
-                       const unsigned int vr[], size_t nvr, double value[]) {
+/* Brings up to date what a get of these roles reads: nothing for inputs, parameters and states
+ * after initialization, the main group for its outputs (and for states that still follow their
+ * start parameters), both groups for a lazy output, everything for a derived one. */
+static ak_status update_for(ak_instance *instance, unsigned int roles, const unsigned int vr[],
+                            size_t nvr) {
+    if (roles & (1u << AK_REAL_DERIVED_OUTPUT)) {
+        return ak_instance_update(instance, AK_GROUP_DERIVED);
+    }
+    if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
+        return ak_instance_update(instance, AK_GROUP_LAZY);
+    }
+    if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) || ak_states_follow_parameters(instance, vr, nvr)) {
+        return ak_instance_update(instance, AK_GROUP_MAIN);
+    }
+    return AK_STATUS_OK;
+}
+
+/* ak_get_reals but its usual path: every argument checked. Out of line, so that the usual path
+ * stays a small function. */
+AK_NOINLINE static ak_status get_reals_checked(ak_instance *instance, const ak_function_rule *call,
+                                               const unsigned int vr[], size_t nvr,
+                                               double value[]) {
     if (!ak_scalar_call_valid(instance, call, vr, nvr, value)) {
         return AK_STATUS_ERROR;
     }
@@ -198,14 +218,7 @@ ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
         (void)ak_variable_of_type(instance, function, vr[i], i, AK_TYPE_REAL);
         return AK_STATUS_ERROR;
     }
-    ak_status status = AK_STATUS_OK;
-    if (roles & (1u << AK_REAL_DERIVED_OUTPUT)) {
-        status = ak_instance_update(instance, AK_GROUP_DERIVED);
-    } else if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
-        status = ak_instance_update(instance, AK_GROUP_LAZY);
-    } else if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) || ak_states_follow_parameters(instance, vr, nvr)) {
-        status = ak_instance_update(instance, AK_GROUP_MAIN);
-    }
+    const ak_status status = update_for(instance, roles, vr, nvr);
     if (run) {
         memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
     } else if (runs != NULL && runs->n_runs > 0) {
@@ -218,6 +231,34 @@ ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
         }
     }
     return status;
+}
+
+ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
+                       const unsigned int vr[], size_t nvr, double value[]) {
+    /* The usual gets, untraced: consecutive value references of known variables, or the same
+     * runs as the last get of a few runs (kept only when every value reference was known). */
+    if (ak_call_passes(instance, call) && vr != NULL && value != NULL) {
+        if (consecutive(vr, nvr)) {
+            const unsigned int roles = ak_real_roles_of_run(instance, vr[0], nvr);
+            if ((roles & (1u << AK_REAL_ABSENT)) == 0) {
+                const ak_status status = update_for(instance, roles, vr, nvr);
+                memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
+                return status;
+            }
+        } else {
+            const ak_get_runs *last = &instance->last_runs;
+            if (nvr > 0 && nvr == last->nvr && last->n_runs > 0 &&
+                memcmp(vr, last->vr, nvr * sizeof vr[0]) == 0) {
+                const ak_status status = update_for(instance, last->roles, vr, nvr);
+                for (size_t r = 0, i = 0; r < last->n_runs; i += last->lengths[r++]) {
+                    memcpy(&value[i], &instance->data.values[vr[i]],
+                           last->lengths[r] * sizeof value[0]);
+                }
+                return status;
+            }
+        }
+    }
+    return get_reals_checked(instance, call, vr, nvr, value);
 }
 
 bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
@@ -283,8 +324,10 @@ static bool check_each_real(const ak_instance *instance, const char *function,
     return true;
 }
 
-ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
-                       const unsigned int vr[], size_t nvr, const double value[]) {
+/* ak_set_reals but its usual path. Out of line, so that the usual path stays a small function. */
+AK_NOINLINE static ak_status set_reals_checked(ak_instance *instance, const ak_function_rule *call,
+                                               const unsigned int vr[], size_t nvr,
+                                               const double value[]) {
     if (!ak_scalar_call_valid(instance, call, vr, nvr, value)) {
         return AK_STATUS_ERROR;
     }
@@ -321,4 +364,24 @@ ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
         }
     }
     return AK_STATUS_OK;
+}
+
+ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
+                       const unsigned int vr[], size_t nvr, const double value[]) {
+    /* The usual set of an importer: every input in value-reference order, finite, untraced, no
+     * input derivative to forget. With the count a constant, the compiler unrolls the
+     * comparison, the check and the copy. Fewer inputs take the checked path's own usual path. */
+    const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
+    if (ak_call_passes(instance, call) && !instance->data.any_input_derivative &&
+        nvr == n_inputs && vr != NULL && value != NULL &&
+        memcmp(vr, EVERY_VALUE_REFERENCE, n_inputs * sizeof vr[0]) == 0) {
+        const ak_store_result stored = ak_store_if_finite(instance->data.values, value, n_inputs);
+        if (stored == AK_STORE_CHANGED) {
+            ak_instance_inputs_changed(instance);
+        }
+        if (stored != AK_STORE_REFUSED) {
+            return AK_STATUS_OK;
+        }
+    }
+    return set_reals_checked(instance, call, vr, nvr, value);
 }

@@ -8,6 +8,7 @@
 
 #include "kinematics_general.h"
 #include "kinematics_general_jacobian.h"
+#include "kinematics_sequences.h"
 
 _Static_assert(KIN_N_VALUE_REFERENCES <= AK_MAX_VARIABLES, "the value array holds them");
 /* The kernel's Jacobian has a row for each output of 0.3.0, omega_fixed[1] .. W_body_dot[3,3],
@@ -20,8 +21,13 @@ static unsigned int kernel_row(unsigned int vr) {
     return vr - KIN_VR_OMEGA_FIXED;
 }
 
+/* The index of the sequence parameter in AK_SEQUENCES (its range is checked when it is set). */
+static int sequence_index(const ak_model_data *data) {
+    return (int)data->values[KIN_VR_SEQUENCE] - 1;
+}
+
 static const ak_sequence *sequence_of(const ak_model_data *data) {
-    return &AK_SEQUENCES[(int)data->values[KIN_VR_SEQUENCE] - 1];
+    return &AK_SEQUENCES[sequence_index(data)];
 }
 
 /* The sines of the angles, kept in data->work from evaluate for evaluate_lazy: the lazy group
@@ -33,10 +39,12 @@ static ak_eval_status evaluate(ak_model_data *data) {
     ak_sines sines;
     ak_angle_sines(&v[KIN_VR_THETA], &sines);
     memcpy(data->work, &sines, sizeof sines);
-    ak_general_angular_kinematics_of_sines(sequence_of(data), &sines, &v[KIN_VR_THETA_DOT],
-                                           &v[KIN_VR_THETA_DDOT], &v[KIN_VR_OMEGA_FIXED],
-                                           &v[KIN_VR_OMEGA_BODY], &v[KIN_VR_ALPHA_FIXED],
-                                           &v[KIN_VR_ALPHA_BODY]);
+    /* The sequence's generated kernel, called directly: what ak_general_angular_kinematics_of_sines
+     * calls for it, without finding it by address. */
+    AK_SEQUENCE_KINEMATICS[sequence_index(data)](&sines, &v[KIN_VR_THETA_DOT],
+                                                 &v[KIN_VR_THETA_DDOT], &v[KIN_VR_OMEGA_FIXED],
+                                                 &v[KIN_VR_OMEGA_BODY], &v[KIN_VR_ALPHA_FIXED],
+                                                 &v[KIN_VR_ALPHA_BODY]);
     return AK_EVAL_OK;
 }
 
