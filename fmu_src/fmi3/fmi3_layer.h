@@ -90,6 +90,8 @@ typedef struct {
     fmi3ValueReference vr[AK3_KEPT_GET_ARRAYS];
     size_t n_values;
     ak_group upto;
+    bool one_run;     /* the arrays follow each other: one copy */
+    bool states_only; /* the states alone (AttitudePropagator's q): no evaluation once initialized */
 } ak3_kept_get;
 
 typedef struct {

@@ -184,6 +184,12 @@ static void store_all(ak_instance *instance, const fmi3ValueReference vr[], size
     }
 }
 
+/* True for a get of the states alone (one array: AttitudePropagator's q), which are current
+ * without an evaluation once they no longer follow the parameters. */
+static bool states_alone(const fmi3ValueReference vr[], size_t nvr) {
+    return AK_MODEL.n_states > 0 && nvr == 1 && AK_MODEL.state_vrs[0] == vr[0];
+}
+
 /* fmi3GetFloat64 but its usual get (output arrays in one run, untraced): each argument checked.
  * Out of line, so that the usual path stays a small function. */
 AK_NOINLINE static fmi3Status get_float64_checked(ak_instance *instance,
@@ -199,9 +205,7 @@ AK_NOINLINE static fmi3Status get_float64_checked(ak_instance *instance,
     if (usual_get(vr, nvr, nValues, &upto, &one_run)) {
         /* The states alone (one array: AttitudePropagator's q) are current without an evaluation
          * once they no longer follow the parameters. */
-        const bool current = AK_MODEL.n_states > 0 && nvr == 1 &&
-                             ak_real_role_of(instance, vr[0]) == AK_REAL_STATE_OUTPUT &&
-                             !ak_states_follow_parameters(instance, vr, nvr);
+        const bool current = states_alone(vr, nvr) && !ak_states_follow_parameters(instance, vr, nvr);
         const fmi3Status status =
             current ? fmi3OK : fmi3_status(ak_instance_update(instance, upto));
         if (one_run) {
@@ -274,13 +278,15 @@ static bool usual_get_kept(ak3_kept_get *kept, const fmi3ValueReference vr[], si
     }
     ak_group upto;
     bool one_run;
-    if (!usual_get(vr, nvr, n_values, &upto, &one_run) || !one_run) {
+    if (!usual_get(vr, nvr, n_values, &upto, &one_run)) {
         return false;
     }
     memcpy(kept->vr, vr, nvr * sizeof vr[0]);
     kept->nvr = nvr;
     kept->n_values = n_values;
     kept->upto = upto;
+    kept->one_run = one_run;
+    kept->states_only = states_alone(vr, nvr);
     return true;
 }
 
@@ -291,8 +297,15 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     if (untraced_call_allowed(instance, AK3_GET_FLOAT64) && vr != NULL && values != NULL &&
         nvr > 0 && nvr <= AK3_KEPT_GET_ARRAYS &&
         usual_get_kept(&self->last_get, vr, nvr, nValues)) {
-        const fmi3Status status = fmi3_status(ak_instance_update(instance, self->last_get.upto));
-        memcpy(values, &instance->data.values[vr[0]], nValues * sizeof values[0]);
+        const ak3_kept_get *kept = &self->last_get;
+        const fmi3Status status = kept->states_only && !ak_states_follow_parameters(instance, vr, nvr)
+                                      ? fmi3OK
+                                      : fmi3_status(ak_instance_update(instance, kept->upto));
+        if (kept->one_run) {
+            memcpy(values, &instance->data.values[vr[0]], nValues * sizeof values[0]);
+        } else {
+            copy_out(instance, vr, nvr, values);
+        }
         return status;
     }
     return get_float64_checked(instance, vr, nvr, values, nValues);
