@@ -4,7 +4,8 @@
 # binaries, each in its build folder (docs/platforms.md):
 #   preset windows         x86_64-windows DLLs (mingw-w64), build-win64/
 #   preset windows32       x86-windows DLLs (mingw-w64 i686, SSE2), build-win32/
-#   preset aarch64         aarch64-linux FMI 3 binaries, build-aarch64/
+#   preset aarch64         aarch64-linux FMI 3 binaries (and FMI 2 ones, for the tests only:
+#                          FMI 2 names no aarch64-linux platform), build-aarch64/
 #   presets darwin-x86_64, darwin-aarch64   the macOS dylibs (zig), build-darwin-*/, of which the
 #                          FMI 2 ones are combined into one universal dylib per model
 #                          (cmake/fat_macho.py) for binaries/darwin64, in build-darwin64/
@@ -18,7 +19,7 @@ cmake --build build-win64 --parallel 2
 bash scripts/configure.sh windows32
 cmake --build build-win32 --parallel 2 --target fmi2_binaries fmi3_binaries fmu_driver fmi3_driver
 bash scripts/configure.sh aarch64
-cmake --build build-aarch64 --parallel 2 --target fmi3_binaries fmi3_driver
+cmake --build build-aarch64 --parallel 2 --target fmi2_binaries fmi3_binaries fmu_driver fmi3_driver
 for arch in x86_64 aarch64; do
   bash scripts/configure.sh "darwin-$arch"
   cmake --build "build-darwin-$arch" --parallel 2 --target fmi2_binaries fmi3_binaries
