@@ -25,8 +25,9 @@ from cross_check import read_csv, read_options  # noqa: E402
 from cross_check_readme import TOOL_ID  # noqa: E402
 
 MODELS = ["AngularKinematics", "AttitudePropagator", "EulerRates"]
-PLATFORMS = {"2.0": {"linux64", "win64"},
-             "3.0": {"x86_64-linux", "x86_64-windows", "aarch64-linux"}}
+PLATFORMS = {"2.0": {"linux64", "win64", "win32", "darwin64"},
+             "3.0": {"x86_64-linux", "x86_64-windows", "aarch64-linux", "x86-windows",
+                     "x86_64-darwin", "aarch64-darwin"}}
 FMUS = {"2.0": ROOT / "dist", "3.0": ROOT / "dist" / "fmi3"}
 
 
