@@ -19,3 +19,8 @@ set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 # give the same bytes (scripts/release.sh), and no path of the build machine is shipped.
 set(CMAKE_BUILD_WITH_INSTALL_NAME_DIR ON)
 set(CMAKE_INSTALL_NAME_DIR "@rpath")
+if(CMAKE_SYSTEM_NAME STREQUAL "Darwin")
+  # No debug map: a Mach-O linker writes each object file's path (the build folder) into the
+  # symbol table as stabs even without -g, and the LC_UUID hashes them; -S leaves them out.
+  set(CMAKE_SHARED_LINKER_FLAGS_INIT "-Wl,-S")
+endif()
