@@ -14,8 +14,8 @@ if [ -z "${AK_SET_UP:-}" ]; then
 fi
 headers=$(.venv/bin/python -c "import fmpy, os; print(os.path.join(os.path.dirname(fmpy.__file__), 'c-code'))")
 read -r -a models <<<"$(.venv/bin/python -c "from codegen.project import MODELS; print(' '.join(MODELS))")"
-includes=(-I fmu_src/core -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi2 -I fmu_src/common -I "$headers")
-common=(fmu_src/core/*.c fmu_src/runtime/*.c fmu_src/fmi2/*.c fmu_src/models/model_*.c)
+includes=(-I fmu_src/core -I fmu_src/elementary -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi2 -I fmu_src/common -I "$headers")
+common=(fmu_src/core/*.c fmu_src/elementary/*.c fmu_src/runtime/*.c fmu_src/fmi2/*.c fmu_src/models/model_*.c)
 cppcheck --version
 
 for model in "${models[@]}"; do
@@ -81,12 +81,12 @@ done
 } >"$suppressions"
 for model in "${models[@]}"; do
   [ -d "fmu_src/models/$model/fmi3" ] || continue
-  fmi3_includes=(-I fmu_src/core -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi3 -I fmu_src/common
+  fmi3_includes=(-I fmu_src/core -I fmu_src/elementary -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi3 -I fmu_src/common
                  -I "fmu_src/models/$model" -I "$headers")
   cppcheck --enable=all --std=c11 --error-exitcode=1 --inline-suppr --quiet \
     --suppress=missingIncludeSystem --suppress=ConfigurationNotChecked --suppress=unusedFunction \
     "${fmi3_includes[@]}" \
-    fmu_src/fmi3 "fmu_src/models/$model/fmi3" fmu_src/core/*.c fmu_src/runtime/*.c \
+    fmu_src/fmi3 "fmu_src/models/$model/fmi3" fmu_src/core/*.c fmu_src/elementary/*.c fmu_src/runtime/*.c \
     fmu_src/models/model_*.c \
     "fmu_src/models/$model"/*.c
   for source in fmu_src/fmi3/*.c fmu_src/models/"$model"/fmi3/*.c; do
@@ -96,8 +96,8 @@ for model in "${models[@]}"; do
 done
 cppcheck --enable=unusedFunction --std=c11 --error-exitcode=1 --inline-suppr --quiet \
   --suppress=missingIncludeSystem --suppress-xml="$suppressions" \
-  -I fmu_src/core -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi3 -I fmu_src/common \
-  -I "$headers" "${model_folders[@]}" fmu_src/core/*.c fmu_src/runtime/*.c fmu_src/models/model_*.c \
+  -I fmu_src/core -I fmu_src/elementary -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi3 -I fmu_src/common \
+  -I "$headers" "${model_folders[@]}" fmu_src/core/*.c fmu_src/elementary/*.c fmu_src/runtime/*.c fmu_src/models/model_*.c \
   fmu_src/fmi3/*.c \
   fmu_src/models/*/*.c fmu_src/models/*/fmi3/*.c
 echo "check_static: cppcheck unusedFunction: 0 findings in the FMI 3 build (exempt by name: $(grep -c '<symbolName>' "$suppressions") symbols, each with its reason)"
