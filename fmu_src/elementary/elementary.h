@@ -15,6 +15,13 @@
 
 #include <math.h>
 
+/* Clang contracts a * b + c into an fma by default (GCC does not in ISO C mode, -std=c11): the
+ * error-free transformations need every operation rounded on its own. The build passes
+ * -ffp-contract=off to every compiler; this keeps a source FMU built without it right too. */
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+
 /* Special values as C99 Annex F states for sin, cos, atan, atan2, asin, acos. */
 double ak_atan(double x);
 double ak_atan2(double y, double x);
