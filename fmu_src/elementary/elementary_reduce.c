@@ -23,6 +23,12 @@ static uint64_t bits_at(const uint32_t words[PRODUCT], int pos) {
     return result;
 }
 
+/* v < 2^53 as a double, exactly, from two 32-bit integer conversions: a 64-bit one is an x87
+ * instruction on 32-bit x86. */
+static double from_53_bits(uint64_t v) {
+    return (double)(int32_t)(v >> 26) * 0x1p26 + (double)(int32_t)(v & 0x3FFFFFFu);
+}
+
 static int leading_zeros(uint64_t v) {
     int n = 0;
     while (!(v & 0x8000000000000000u)) {
@@ -95,8 +101,8 @@ unsigned ak_reduce_pio2_huge(double x, double *hi, double *lo) {
         f1 = (f1 << c) | (f2 >> (64 - c));
     }
     shift += c;
-    const double h = (double)(int64_t)(f0 >> 11) * ak_pow2(-53 - shift);
-    const double l = (double)(int64_t)(((f0 & 0x7FFu) << 42) | (f1 >> 22)) * ak_pow2(-106 - shift);
+    const double h = from_53_bits(f0 >> 11) * ak_pow2(-53 - shift);
+    const double l = from_53_bits(((f0 & 0x7FFu) << 42) | (f1 >> 22)) * ak_pow2(-106 - shift);
     /* r = (h + l) pi/2 in double-double. */
     double p, pe;
     ak_two_prod(h, AK_PIO2_HI, &p, &pe);
