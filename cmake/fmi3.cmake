@@ -25,7 +25,7 @@ if(NOT EXISTS "${FMI2_HEADERS_DIR}/fmi3Functions.h")
 endif()
 
 set(FMU3_STAGING_DIR "${CMAKE_BINARY_DIR}/fmu3")
-set(AK_FMI3_INCLUDE_DIRS fmu_src/core fmu_src/models fmu_src/runtime fmu_src/fmi3 fmu_src/common)
+set(AK_FMI3_INCLUDE_DIRS fmu_src/core fmu_src/elementary fmu_src/models fmu_src/runtime fmu_src/fmi3 fmu_src/common)
 
 function(ak_add_fmu3 model)
   set(_target ${model}_fmi3)
