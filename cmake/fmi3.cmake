@@ -25,7 +25,7 @@ if(NOT EXISTS "${FMI2_HEADERS_DIR}/fmi3Functions.h")
 endif()
 
 set(FMU3_STAGING_DIR "${CMAKE_BINARY_DIR}/fmu3")
-set(AK_FMI3_INCLUDE_DIRS fmu_src/core fmu_src/models fmu_src/runtime fmu_src/fmi3 fmu_src/common)
+set(AK_FMI3_INCLUDE_DIRS fmu_src/core fmu_src/elementary fmu_src/models fmu_src/runtime fmu_src/fmi3 fmu_src/common)
 
 function(ak_add_fmu3 model)
   set(_target ${model}_fmi3)
@@ -118,9 +118,11 @@ if(AK_PACKAGE_FMU)
   set(AK_DIST_FMI3_LINES "")
   foreach(_model IN LISTS AK_MODELS)
     string(APPEND AK_DIST_FMI2_LINES "- `${_model}.fmu`: FMI 2.0, Co-Simulation and Model Exchange, "
-                                     "binaries linux64 and win64, C sources\n")
+                                     "binaries linux64, win64, win32 and darwin64 (universal: x86_64 "
+                                     "and arm64), C sources\n")
     string(APPEND AK_DIST_FMI3_LINES "- `fmi3/${_model}.fmu`: FMI 3.0, Co-Simulation and Model Exchange, "
-                                     "binaries x86_64-linux, x86_64-windows and aarch64-linux, C sources\n")
+                                     "binaries x86_64-linux, aarch64-linux, x86_64-windows, "
+                                     "x86-windows, x86_64-darwin and aarch64-darwin, C sources\n")
   endforeach()
   string(STRIP "${AK_DIST_FMI3_LINES}" AK_DIST_FMI3_LINES)
   configure_file(cmake/dist_README.md.in "${AK_DIST_DIR}/README.md" @ONLY NEWLINE_STYLE UNIX)

@@ -6,13 +6,18 @@ set(AK_CORE_SOURCES
   fmu_src/core/kinematics_general.c
   fmu_src/core/kinematics_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
-  fmu_src/core/attitude.c)
+  fmu_src/core/attitude.c
+  fmu_src/elementary/elementary_reduce.c
+  fmu_src/elementary/elementary_arctangent.c)
 set(AK_CORE_HEADERS
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
   fmu_src/core/kinematics_sequences.h
   fmu_src/core/kinematics_general_jacobian.h
-  fmu_src/core/attitude.h)
+  fmu_src/core/attitude.h
+  fmu_src/elementary/elementary.h
+  fmu_src/elementary/elementary_double_double.h
+  fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_COMMON_SOURCES
   fmu_src/runtime/instance.c
   fmu_src/runtime/outputs.c

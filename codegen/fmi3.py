@@ -124,7 +124,7 @@ def build_description(model, flat_sources,
 {files}
     </SourceFileSet>
     <Library name="m" external="true"
-      description="The C math library (sin, cos, atan2, sqrt...): libm, -lm, on Unix-like systems; part of the C runtime on Windows"/>
+      description="The C math library (sqrt, fabs, copysign; the sources bring their own sin, cos, atan2): libm, -lm, on Unix-like systems; part of the C runtime on Windows"/>
   </BuildConfiguration>
 </fmiBuildDescription>
 '''

@@ -72,8 +72,9 @@ done
 configure_and_build asan $(per_model fmu_) $(per_model fmu3_) $(per_model model_info_)
 # --quick: the tests of the FMI layer only (calls, bad input, FMU state, model exchange,
 # derivatives, EulerRates); the whole suite takes a minute and a half under ASan. Never
-# tests/python/test_windows_binary.py: it checks the Windows DLL packaged in dist/*.fmu, which the ASan
-# build does not make.
+# tests/python/test_windows_binary.py and the other tests of the other platforms' binaries packaged in
+# dist/ (test_fmi3_platforms.py, test_platforms.py, test_darwin_binaries.py), which the ASan build does
+# not make.
 if [ "$quick" = --quick ]; then
   suite=$(printf 'tests/python/%s ' test_fmi_calls.py test_bad_input.py test_fmu_state.py \
     test_model_exchange.py test_directional_derivatives.py test_output_derivatives.py \
@@ -81,7 +82,8 @@ if [ "$quick" = --quick ]; then
     test_fmi3_bad_input.py test_fmi3_fmu_state.py test_fmi3_derivatives.py test_fmi3_cosimulation.py \
     test_fmi3_bit_identity.py test_fmi3_attitude.py test_attitude_fmu.py test_attitude_derivatives.py)
 else
-  suite="tests/python --ignore=tests/python/test_windows_binary.py --ignore=tests/python/test_fmi3_platforms.py"
+  suite="tests/python --ignore=tests/python/test_windows_binary.py --ignore=tests/python/test_fmi3_platforms.py
+    --ignore=tests/python/test_platforms.py --ignore=tests/python/test_darwin_binaries.py"
 fi
 echo "--- asan+ubsan: pytest through fmpy with build-asan/dist/{AngularKinematics,EulerRates}.fmu"
 # shellcheck disable=SC2086

@@ -42,8 +42,10 @@ def readme(model, version, interface, platform, outputs, states):
                else "take one explicit Euler step of the states to the next row's time"
                if states else "go to the next row")
     other = ("" if platform == HOST[version] else
-             f"; this folder's {platform} binary prints the same to within 2 units in the last "
-             "place (tests/python/test_windows_binary.py, test_fmi3_platforms.py)")
+             f"; this folder's {platform} binary is checked, not run, on the build machine "
+             "(tests/python/test_darwin_binaries.py)" if "darwin" in platform else
+             f"; tests/python/test_platforms.py compares what this folder's {platform} binary "
+             "computes with it bit for bit")
     return TEXT.format(
         model=model, interface={"cs": "Co-Simulation", "me": "Model Exchange"}[interface],
         version=version, platform=platform, tool=TOOL_ID, tool_version=_version(),

@@ -35,7 +35,7 @@ REFERENCE_OUTPUTS = {
 
 
 def platforms(fmu):
-    """The binaries/<platform>/ folders of the FMU: the FMI 2 names (linux64, win64) are the
+    """The binaries/<platform>/ folders of the FMU: the FMI 2 names (linux64, win64, ...) are the
     cross-check's; FMI 3's are its platform tuples (x86_64-linux, ...)."""
     with zipfile.ZipFile(fmu) as archive:
         return sorted({n.split("/")[1] for n in archive.namelist()

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Prepares a machine for building and testing: C toolchain, CMake, mingw-w64 for the Windows
-# binary, gcc-aarch64-linux-gnu and qemu-user for the aarch64-linux FMI 3 binary (from Debian's
-# packages if missing; with --with-wine also wine, to test the Windows binary), and a Python
-# virtual environment .venv with the pinned packages of requirements.txt.
+# binaries (x86_64 and i686), gcc-aarch64-linux-gnu and qemu-user for the aarch64-linux FMI 3
+# binary (from Debian's packages if missing; with --with-wine also wine, to test the Windows
+# binary), and a Python virtual environment .venv with the pinned packages of requirements.txt,
+# among them zig (ziglang) for the macOS binaries and the proof builds (docs/platforms.md).
 # Idempotent: a second run installs nothing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,6 +31,8 @@ command -v cc >/dev/null 2>&1 || missing+=(gcc libc6-dev)
 command -v python3 >/dev/null 2>&1 || missing+=(python3)
 # The Windows binary is cross-compiled with mingw-w64; the tests run it under wine (--with-wine).
 command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-x86-64-win32)
+# The 32-bit Windows binary: mingw-w64 for i686 (the macOS ones: zig, from requirements.txt).
+command -v i686-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-i686-win32)
 # The aarch64-linux FMI 3 binaries are cross-compiled with Debian's gcc and run under qemu-user.
 command -v aarch64-linux-gnu-gcc >/dev/null 2>&1 || missing+=(gcc-aarch64-linux-gnu)
 [ -f /usr/aarch64-linux-gnu/lib/libc.so.6 ] || missing+=(libc6-dev-arm64-cross)

@@ -40,6 +40,12 @@ bash scripts/setup_importers.sh # OpenJDK, Maven, the FMI4j driver (tests/python
 bash scripts/setup_abuse_tools.sh
 export AK_SET_UP=1 # the scripts below skip their own set-up and build
 bash scripts/build.sh
+# The proof builds (docs/platforms.md): the 32-bit x86 code as static musl drivers that run here,
+# and zig's x86_64-linux binaries, whose printouts must equal gcc's (tests/python/test_platforms.py).
+bash scripts/configure.sh x86-musl
+cmake --build build-x86-musl --parallel 2 --target linked_drivers
+bash scripts/configure.sh zig-linux
+cmake --build build-zig-linux --parallel 2 --target fmi2_binaries fmi3_binaries fmu_driver fmi3_driver
 ctest --test-dir build --output-on-failure
 bash bench/run.sh --quick
 bash bench/guard.sh # callgrind instructions per cycle at most 3 % over the previous release's

@@ -11,7 +11,11 @@
  * The inputs are exact binary fractions from an integer generator, so every platform feeds the
  * FMU the same bits and any difference comes from the binaries alone.
  *
- * Usage: fmi3_driver LIBRARY MODEL [STEPS]    exit status 0 when no call returned fmi3Error. */
+ * Usage: fmi3_driver LIBRARY MODEL [STEPS]    exit status 0 when no call returned fmi3Error.
+ *
+ * Built with AK_DRIVER_LINKED, the driver has one model's FMI functions linked in instead of
+ * loading a library (LIBRARY is ignored; MODEL must be that model, or the instantiation token is
+ * refused): a static executable for the 32-bit x86 proof build (docs/platforms.md). */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,7 +24,9 @@
 #include "fmi3FunctionTypes.h"
 #include "fmi3_driver_models.h"
 
-#ifdef _WIN32
+#if defined(AK_DRIVER_LINKED)
+#include "fmi3Functions.h"
+#elif defined(_WIN32)
 #include <windows.h>
 #else
 #include <dlfcn.h>
@@ -43,6 +49,24 @@ typedef struct {
     fmi3FreeInstanceTYPE *free_instance;
 } fmi3_api;
 
+#ifdef AK_DRIVER_LINKED
+static int load_api(void *library, fmi3_api *api) {
+    (void)library;
+    api->instantiate = fmi3InstantiateCoSimulation;
+    api->enter_initialization_mode = fmi3EnterInitializationMode;
+    api->exit_initialization_mode = fmi3ExitInitializationMode;
+    api->set_int64 = fmi3SetInt64;
+    api->set_float64 = fmi3SetFloat64;
+    api->get_float64 = fmi3GetFloat64;
+    api->do_step = fmi3DoStep;
+    api->directional = fmi3GetDirectionalDerivative;
+    api->adjoint = fmi3GetAdjointDerivative;
+    api->output_derivatives = fmi3GetOutputDerivatives;
+    api->terminate = fmi3Terminate;
+    api->free_instance = fmi3FreeInstance;
+    return 1;
+}
+#else
 static generic_function load_symbol(void *library, const char *name) {
     generic_function function = NULL;
 #ifdef _WIN32
@@ -84,6 +108,7 @@ static int load_api(void *library, fmi3_api *api) {
     api->free_instance = (fmi3FreeInstanceTYPE *)f[11];
     return 1;
 }
+#endif
 
 /* The directional and adjoint derivatives are those of the first UNKNOWNS output arrays; the
  * output derivatives those of the first OUTPUT_DERIVATIVES (omega and alpha). */
@@ -195,7 +220,10 @@ int main(int argc, char **argv) {
         }
     }
     const int steps = argc > 3 ? atoi(argv[3]) : 3;
-#ifdef _WIN32
+#if defined(AK_DRIVER_LINKED)
+    static const char linked_in = 0; /* any non-NULL handle: the functions are linked in */
+    void *library = (void *)&linked_in;
+#elif defined(_WIN32)
     void *library = (void *)LoadLibraryA(argv[1]);
 #else
     void *library = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);

@@ -14,7 +14,12 @@
  * Output: "fmi2GetVersion 2.0", "outputs NAME...", then per step "k y1 y2 ...".
  *
  * Usage: fmu_driver LIBRARY [STEPS [MODEL]]   MODEL: AngularKinematics (default), EulerRates,
- * AttitudePropagator; exit status 0 when every call returned fmi2OK. */
+ * AttitudePropagator; exit status 0 when every call returned fmi2OK.
+ *
+ * Built with AK_DRIVER_LINKED, the driver has one model's FMI functions linked in instead of
+ * loading a library (LIBRARY is ignored; MODEL must be that model, or fmi2Instantiate refuses the
+ * GUID): a static executable for a platform that has no dynamic loader here (the 32-bit x86 proof
+ * build, docs/platforms.md). */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,7 +30,9 @@
 #include "AttitudePropagator_variables.h"
 #include "EulerRates_variables.h"
 
-#ifdef _WIN32
+#if defined(AK_DRIVER_LINKED)
+#include "fmi2Functions.h"
+#elif defined(_WIN32)
 #include <windows.h>
 #else
 #include <dlfcn.h>
@@ -61,6 +68,28 @@ typedef struct {
     fmi2FreeInstanceTYPE *free_instance;
 } fmi2_api;
 
+#ifdef AK_DRIVER_LINKED
+static void *open_library(const char *path) {
+    (void)path;
+    static const char linked_in = 0; /* any non-NULL handle */
+    return (void *)&linked_in;
+}
+
+static int load_api(void *library, fmi2_api *api) {
+    (void)library;
+    api->get_version = fmi2GetVersion;
+    api->instantiate = fmi2Instantiate;
+    api->setup_experiment = fmi2SetupExperiment;
+    api->enter_initialization_mode = fmi2EnterInitializationMode;
+    api->exit_initialization_mode = fmi2ExitInitializationMode;
+    api->set_real = fmi2SetReal;
+    api->get_real = fmi2GetReal;
+    api->do_step = fmi2DoStep;
+    api->terminate = fmi2Terminate;
+    api->free_instance = fmi2FreeInstance;
+    return 1;
+}
+#else
 static generic_function load_symbol(void *library, const char *name) {
     generic_function function = NULL;
 #ifdef _WIN32
@@ -108,6 +137,7 @@ static int load_api(void *library, fmi2_api *api) {
     api->free_instance = (fmi2FreeInstanceTYPE *)f[9];
     return 1;
 }
+#endif
 
 static void logger(fmi2ComponentEnvironment environment, fmi2String instance, fmi2Status status,
                    fmi2String category, fmi2String message, ...) {

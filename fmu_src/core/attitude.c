@@ -1,6 +1,8 @@
 /* Attitude on unit quaternions: the equations are stated in attitude.h. */
 #include "attitude.h"
 
+#include "elementary.h"
+
 #include <math.h>
 #include <stddef.h>
 
@@ -17,13 +19,15 @@ void ak_quat_multiply(const double a[4], const double b[4], double out[4]) {
 void ak_quat_exp(const double v[3], double out[4]) {
     const double angle = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     double sinc; /* sin(angle) / angle */
+    double s, c;
+    ak_sincos(angle, &s, &c);
     if (angle < 1e-4) {
         const double a2 = angle * angle;
         sinc = 1.0 - a2 / 6.0 * (1.0 - a2 / 20.0);
     } else {
-        sinc = sin(angle) / angle;
+        sinc = s / angle;
     }
-    out[0] = cos(angle);
+    out[0] = c;
     out[1] = sinc * v[0];
     out[2] = sinc * v[1];
     out[3] = sinc * v[2];
@@ -182,14 +186,14 @@ static void principal(const chain_axes *c, double R[3][3], double phi[3], double
     const double e = c->e;
     if (c->proper) {
         *distance = sqrt(R[i][j] * R[i][j] + R[i][k] * R[i][k]);
-        phi[1] = atan2(*distance, R[i][i]);
-        phi[0] = atan2(R[j][i], -e * R[k][i]);
-        phi[2] = atan2(R[i][j], e * R[i][k]);
+        phi[1] = ak_atan2(*distance, R[i][i]);
+        phi[0] = ak_atan2(R[j][i], -e * R[k][i]);
+        phi[2] = ak_atan2(R[i][j], e * R[i][k]);
     } else {
         *distance = sqrt(R[i][i] * R[i][i] + R[i][j] * R[i][j]);
-        phi[1] = atan2(e * R[i][k], *distance);
-        phi[0] = atan2(-e * R[j][k], R[k][k]);
-        phi[2] = atan2(-e * R[i][j], R[i][i]);
+        phi[1] = ak_atan2(e * R[i][k], *distance);
+        phi[0] = ak_atan2(-e * R[j][k], R[k][k]);
+        phi[2] = ak_atan2(-e * R[i][j], R[i][i]);
     }
 }
 
@@ -197,18 +201,21 @@ static void principal(const chain_axes *c, double R[3][3], double phi[3], double
  * R_a(x) on its right (row) or left (column); see attitude.h, section 6. */
 static double angle_from_row(int a, int line, double M[3][3]) {
     const int next = (a + 1) % 3, after = (a + 2) % 3;
-    return line == next ? atan2(-M[line][after], M[line][line]) : atan2(M[line][next], M[line][line]);
+    return line == next ? ak_atan2(-M[line][after], M[line][line])
+                        : ak_atan2(M[line][next], M[line][line]);
 }
 
 static double angle_from_column(int a, int line, double M[3][3]) {
     const int next = (a + 1) % 3, after = (a + 2) % 3;
-    return line == next ? atan2(M[after][line], M[line][line]) : atan2(-M[next][line], M[line][line]);
+    return line == next ? ak_atan2(M[after][line], M[line][line])
+                        : ak_atan2(-M[next][line], M[line][line]);
 }
 
 /* The elementary rotation matrix R_a(x). */
 static void elementary(int a, double x, double E[3][3]) {
     const int next = (a + 1) % 3, after = (a + 2) % 3;
-    const double s = sin(x), co = cos(x);
+    double s, co;
+    ak_sincos(x, &s, &co);
     for (int r = 0; r < 3; r++) {
         for (int col = 0; col < 3; col++) {
             E[r][col] = r == col ? 1.0 : 0.0;

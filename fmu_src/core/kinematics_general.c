@@ -2,6 +2,8 @@
  * kinematics_general.h. Everything is built from the chain of section 1 and the axes u_m, v_m. */
 #include "kinematics_general.h"
 
+#include "elementary.h"
+
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -33,9 +35,10 @@ static void make_chain(const ak_sequence *sequence, const double theta[3], chain
 }
 
 void ak_angle_sines(const double theta[3], ak_sines *sines) {
+    /* The project's sincos (elementary.h), inlined: the same bits on every platform, and one
+     * argument reduction for both. */
     for (int k = 0; k < 3; k++) {
-        sines->sin[k] = sin(theta[k]);
-        sines->cos[k] = cos(theta[k]);
+        ak_sincos(theta[k], &sines->sin[k], &sines->cos[k]);
     }
 }
 
@@ -509,11 +512,11 @@ static double vector_part_norm(const double q[4]) {
 }
 
 void ak_rotation_angle(const double q[4], double *angle) {
-    /* 2 atan2(s, q0) with s, q0 >= 0, as the atan of whichever ratio is at most 1: glibc's atan
-     * costs half its atan2 (about 80 against 165 instructions). */
-    static const double PI = 3.14159265358979323846;
+    /* 2 atan2(s, q0) with the project's atan2 (elementary.h): it corrects the quotient's rounding,
+     * so one rounding error at the end, for about 35 instructions more than its atan of a rounded
+     * quotient (a derived output, off the stepping path). s = 0 gives 0 even for q0 = -0. */
     const double s = vector_part_norm(q);
-    *angle = s < q[0] ? 2.0 * atan(s / q[0]) : s > 0.0 ? PI - 2.0 * atan(q[0] / s) : 0.0;
+    *angle = s > 0.0 ? 2.0 * ak_atan2(s, q[0]) : 0.0;
 }
 
 void ak_rotation_angle_tangent(const double q[4], const double dq[4], double *d_angle) {

@@ -87,6 +87,11 @@ size_t ak_test_main_outputs(fmi2ValueReference out[AK_MAX_VARIABLES]);
  * (theta, theta_dot, theta_ddot; omega_fixed, omega_body, alpha_fixed, alpha_body): a model with
  * that layout and the sequence body123 is compared with ak_angular_kinematics_123 too. */
 bool ak_test_has_kinematics_123_layout(void);
+
+/* Whether libm's sin and cos of the three angles are, to the bit, the project's own
+ * (fmu_src/elementary/, which the FMU uses): only then can the hand-written 1-2-3 closed form
+ * (kinematics_123.c, which keeps libm's as a fixed anchor) match the FMU bit for bit. */
+bool ak_test_libm_sines_agree(const double theta[3]);
 /* True when theta[2] is the input of value reference 1 and the model reports its distance to a
  * singularity (singularity_distance): it warns near the singular theta[2] and discards a step at
  * it (AK_TEST_SINGULAR_THETA2). */

@@ -63,9 +63,9 @@ int main(int argc, char **argv) {
     }
     const double step_size = 1e-3;
     const size_t n_outputs = ak_test_main_outputs(OUTPUTS);
-    /* A model with the 1-2-3 kernel's layout (default sequence body123): every step against the
-     * hand-written core; other models: every step against a fresh evaluation of the model
-     * (ak_test_outputs_consistent). */
+    /* A model with the 1-2-3 kernel's layout (default sequence body123): every step whose angles
+     * have the same sines in libm as in the FMU against the hand-written core; the other steps
+     * and other models against a fresh evaluation of the model (ak_test_outputs_consistent). */
     const bool against_core = ak_test_has_kinematics_123_layout();
     ak_recorder recorder;
     ak_recorder_clear(&recorder);
@@ -79,7 +79,7 @@ int main(int argc, char **argv) {
     }
     const long allocations_after_setup = ak_test_total_allocations();
     double time = 0.0;
-    long failed_calls = 0, drifted_steps = 0, rss_start = -1;
+    long failed_calls = 0, drifted_steps = 0, core_steps = 0, rss_start = -1;
     /* A first reading pages in what reading needs (sscanf, locale), so that it is not counted
      * as growth between the two readings that matter. */
     (void)resident_kib();
@@ -104,10 +104,11 @@ int main(int argc, char **argv) {
         failed_calls += fmi2DoStep(c, time, step_size, fmi2True) != fmi2OK;
         time += step_size;
         failed_calls += fmi2GetReal(c, OUTPUTS, n_outputs, outputs) != fmi2OK;
-        if (against_core) {
+        if (against_core && ak_test_libm_sines_agree(&inputs[0])) {
             ak_angular_kinematics_123(&inputs[0], &inputs[3], &inputs[6], &expected[0],
                                       &expected[3], &expected[6], &expected[9]);
             drifted_steps += memcmp(outputs, expected, n_outputs * sizeof outputs[0]) != 0;
+            core_steps++;
         } else {
             drifted_steps += !ak_test_outputs_consistent(c);
         }
@@ -131,7 +132,12 @@ int main(int argc, char **argv) {
            "final time %.17g (expected %.17g)\n",
            failed_calls, drifted_steps, recorder.count, allocations_during_run,
            ak_test_live_allocations(), last_time, time);
+    if (against_core) {
+        printf("soak_fmi2: %ld steps against the hand-written core (libm's sines = the FMU's), "
+               "the others against a fresh evaluation\n", core_steps);
+    }
     const bool ok = failed_calls == 0 && drifted_steps == 0 && recorder.count == 0 &&
+                    (!against_core || core_steps > 0) &&
                     allocations_during_run == 0 && ak_test_live_allocations() == 0 &&
                     last_time == time && rss_flat;
     if (!ok) {

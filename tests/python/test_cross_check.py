@@ -25,9 +25,12 @@ from cross_check import read_csv, read_options  # noqa: E402
 from cross_check_readme import TOOL_ID  # noqa: E402
 
 MODELS = ["AngularKinematics", "AttitudePropagator", "EulerRates"]
-PLATFORMS = {"2.0": {"linux64", "win64"},
-             "3.0": {"x86_64-linux", "x86_64-windows", "aarch64-linux"}}
+PLATFORMS = {"2.0": {"linux64", "win64", "win32", "darwin64"},
+             "3.0": {"x86_64-linux", "x86_64-windows", "aarch64-linux", "x86-windows",
+                     "x86_64-darwin", "aarch64-darwin"}}
 FMUS = {"2.0": ROOT / "dist", "3.0": ROOT / "dist" / "fmi3"}
+# One folder per FMI version, interface (cs, me), platform and model: 24 FMI 2, 36 FMI 3.
+FOLDERS = sum(len(platforms) for platforms in PLATFORMS.values()) * 2 * len(MODELS)
 
 
 def run(*arguments):
@@ -57,10 +60,11 @@ def test_validator_reports_no_problems(folder, report):
     report(done.stdout.strip().splitlines()[1])
     assert done.returncode == 0, done.stdout[-3000:]
     assert f"0 problems found in {folder}" in done.stdout
-    assert "Validated 30 FMUs" in done.stdout  # 12 FMI 2 folders, 18 FMI 3 (counted, not read)
+    assert f"Validated {FOLDERS} FMUs" in done.stdout  # FMI 3 folders counted, not read
     # It skips fmus/3.0/: its check of one folder, run on each FMI 3 folder.
     fmi3 = [model_folder(folder, *case) for case in cases() if case[0] == "3.0"]
-    assert len(fmi3) == 18 and all(validate_test_fmu(str(here)) == [] for here in fmi3)
+    assert len(fmi3) == len(PLATFORMS["3.0"]) * 2 * len(MODELS)
+    assert all(validate_test_fmu(str(here)) == [] for here in fmi3)
 
 
 def test_validator_fails_on_a_name_with_a_comma(folder, tmp_path):
@@ -165,7 +169,9 @@ def move(path, row, column, element=0, factor=1 + 1e-9):
 def test_ci_check_passes_then_fails_on_a_moved_value(folder, report):
     done = run(ROOT / "examples" / "ci_check.py", "--cross-check", folder)
     assert done.returncode == 0, done.stdout + done.stderr
-    assert done.stdout.count(" ok ") == 30 and done.stdout.count("largest deviation 0\n") == 30
+    assert FOLDERS == 60
+    assert done.stdout.count(" ok ") == FOLDERS
+    assert done.stdout.count("largest deviation 0\n") == FOLDERS
 
     here = model_folder(folder, "2.0", "me", "win64", "EulerRates")
     move(here / "EulerRates_ref.csv", 200, 1)  # theta_dot[1] at t = 1.99 s
@@ -176,4 +182,4 @@ def test_ci_check_passes_then_fails_on_a_moved_value(folder, report):
     assert done.returncode == 1, done.stdout
     assert "DIFFERENT me EulerRates theta_dot[1]" in done.stdout and "t = 1.99 s" in done.stdout
     assert "DIFFERENT cs AttitudePropagator q[3]" in done.stdout and "t = 3 s" in done.stdout
-    assert done.stdout.count(" ok ") == 28 and done.stdout.count("FAILED ") == 2
+    assert done.stdout.count(" ok ") == FOLDERS - 2 and done.stdout.count("FAILED ") == 2

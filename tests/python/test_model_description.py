@@ -68,7 +68,8 @@ def test_fmu_archive_holds_description_binaries_documentation_sources(model, roo
         packaged = archive.read("modelDescription.xml")
         icon = archive.read("model.png")
     assert {"modelDescription.xml", "model.png", f"binaries/linux64/{name}.so",
-            f"binaries/win64/{name}.dll", "documentation/index.html",
+            f"binaries/win64/{name}.dll", f"binaries/win32/{name}.dll",
+            f"binaries/darwin64/{name}.dylib", "documentation/index.html",
             "sources/buildDescription.xml"} <= names
     listed = (root / "build" / f"fmu_sources_{name}.txt").read_text().split()
     assert {n for n in names if n.startswith("sources/") and n.endswith(".c")} == \

@@ -23,9 +23,11 @@ from zip_fmu import DEFAULT_DATE, fixed_date, pack  # noqa: E402
 
 
 # (staged folder in build/, archive in dist/, binaries inside) of each model's FMI 2 and FMI 3 FMU
-KINDS = {"fmi2": ("fmu_package_{}", "{}.fmu", ["linux64/{}.so", "win64/{}.dll"]),
+KINDS = {"fmi2": ("fmu_package_{}", "{}.fmu",
+                  ["linux64/{}.so", "win64/{}.dll", "win32/{}.dll", "darwin64/{}.dylib"]),
          "fmi3": ("fmu3_package_{}", "fmi3/{}.fmu",
-                  ["x86_64-linux/{}.so", "x86_64-windows/{}.dll", "aarch64-linux/{}.so"])}
+                  ["x86_64-linux/{}.so", "x86_64-windows/{}.dll", "aarch64-linux/{}.so",
+                   "x86-windows/{}.dll", "x86_64-darwin/{}.dylib", "aarch64-darwin/{}.dylib"])}
 EPOCH = 1700000001  # 2023-11-14 22:13:21 UTC: zip keeps even seconds
 
 
@@ -68,7 +70,7 @@ def test_source_date_epoch_is_the_one_date(kind, tmp_path, monkeypatch, fmu_path
         assert fixed_date({"SOURCE_DATE_EPOCH": epoch}) == date
 
 
-@pytest.mark.external  # reads the win64 and aarch64 binaries of the cross builds
+@pytest.mark.external  # reads the binaries of the cross builds
 @pytest.mark.parametrize("kind", KINDS)
 @pytest.mark.parametrize("model", MODELS)
 def test_entries_carry_no_time_and_no_path(kind, model, fmu_path, euler_fmu_path):
@@ -86,10 +88,10 @@ def test_entries_carry_no_time_and_no_path(kind, model, fmu_path, euler_fmu_path
     for binary in found:
         assert str(ROOT).encode() not in binary
         assert str(ROOT.resolve()).encode() not in binary
-    windows = next(binary for binary in found if binary[:2] == b"MZ")
-    pe_header = struct.unpack_from("<I", windows, 0x3C)[0]
-    assert windows[pe_header:pe_header + 4] == b"PE\0\0"
-    assert struct.unpack_from("<I", windows, pe_header + 8)[0] == 0  # TimeDateStamp
+    for windows in (binary for binary in found if binary[:2] == b"MZ"):  # x86_64 and x86
+        pe_header = struct.unpack_from("<I", windows, 0x3C)[0]
+        assert windows[pe_header:pe_header + 4] == b"PE\0\0"
+        assert struct.unpack_from("<I", windows, pe_header + 8)[0] == 0  # TimeDateStamp
 
 
 @pytest.mark.slow  # one LTO link

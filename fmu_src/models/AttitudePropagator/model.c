@@ -10,6 +10,7 @@
 #include <math.h>
 
 #include "attitude.h"
+#include "elementary.h"
 #include "kinematics_general.h"
 
 _Static_assert(AP_N_VALUE_REFERENCES <= AK_MAX_VARIABLES, "the value array holds them");
@@ -461,9 +462,10 @@ static void jacobian_row(const ak_model_data *data, const attitude_partials *a, 
         }
     } else if (vr == AP_VR_SINGULARITY_DISTANCE) {
         /* |cos theta2| (Tait-Bryan) or |sin theta2| (proper Euler). */
-        const double t2 = a->theta[1];
-        const double slope = sequence_of(data)->proper_euler ? (sin(t2) >= 0.0 ? 1.0 : -1.0) * cos(t2)
-                                                             : (cos(t2) >= 0.0 ? -1.0 : 1.0) * sin(t2);
+        double s2, c2;
+        ak_sincos(a->theta[1], &s2, &c2);
+        const double slope = sequence_of(data)->proper_euler ? (s2 >= 0.0 ? 1.0 : -1.0) * c2
+                                                             : (c2 >= 0.0 ? -1.0 : 1.0) * s2;
         for (int k = 0; k < 4; k++) {
             row[COLUMN_Q + k] = slope * a->dtheta[k][1];
         }

@@ -1,0 +1,119 @@
+/* The project's elementary functions (fmu_src/elementary/): the special values of C99 Annex F
+ * (F.9.1, F.9.4) bit for bit, signed zeros included, and exact relations that every correct
+ * implementation meets. Accuracy against mpmath: tests/python/test_elementary_accuracy.py. */
+#include "elementary.h"
+#include "test_check.h"
+
+#include <float.h>
+#include <stdint.h>
+#include <string.h>
+
+static uint64_t bits_of(double x) {
+    uint64_t b;
+    memcpy(&b, &x, sizeof b);
+    return b;
+}
+
+/* The same double, bit for bit (any NaN matches any NaN). */
+static void check_same(double got, double expected, const char *what, double arg) {
+    const int ok = (got != got && expected != expected) || bits_of(got) == bits_of(expected);
+    ak_check(ok, "%s(%a): got %a, expected %a", what, arg, got, expected);
+}
+
+static void check_same2(double got, double expected, const char *what, double y, double x) {
+    const int ok = (got != got && expected != expected) || bits_of(got) == bits_of(expected);
+    ak_check(ok, "%s(%a, %a): got %a, expected %a", what, y, x, got, expected);
+}
+
+static double sin_of(double x) { return ak_sin(x); }
+static double cos_of(double x) { return ak_cos(x); }
+
+int main(void) {
+    const double inf = INFINITY, nan_value = NAN, tiny = 0x1p-1074, pio2 = AK_PIO2_HI,
+                 pi = AK_PI_HI, pio4 = AK_PIO4_HI;
+
+    /* sin and cos (F.9.1.6, F.9.1.7): zeros keep their sign, infinities and NaN give NaN. */
+    check_same(sin_of(0.0), 0.0, "sin", 0.0);
+    check_same(sin_of(-0.0), -0.0, "sin", -0.0);
+    check_same(cos_of(0.0), 1.0, "cos", 0.0);
+    check_same(cos_of(-0.0), 1.0, "cos", -0.0);
+    check_same(sin_of(tiny), tiny, "sin", tiny);
+    check_same(sin_of(-DBL_MIN), -DBL_MIN, "sin", -DBL_MIN);
+    check_same(sin_of(0x1p-30), 0x1p-30, "sin", 0x1p-30);
+    const double non_finite[] = {inf, -inf, nan_value};
+    for (int i = 0; i < 3; i++) {
+        double s, c;
+        ak_sincos(non_finite[i], &s, &c);
+        ak_check(s != s && c != c, "sincos(%a) gives NaN, NaN (got %a, %a)", non_finite[i], s, c);
+    }
+    /* Odd and even: sin(-x) = -sin x, cos(-x) = cos x, on both reductions and the huge one. */
+    const double arguments[] = {0.5, 1.0, 3.0, 100.0, 0x1p19 + 0.3, 0x1p20, 1e22, 0x1.6ac5b262ca1ffp+849,
+                                DBL_MAX};
+    for (size_t i = 0; i < sizeof arguments / sizeof arguments[0]; i++) {
+        const double x = arguments[i];
+        double s, c, s_neg, c_neg;
+        ak_sincos(x, &s, &c);
+        ak_sincos(-x, &s_neg, &c_neg);
+        check_same(s_neg, -s, "sin of minus", x);
+        check_same(c_neg, c, "cos of minus", x);
+        ak_check(fabs(s) <= 1.0 && fabs(c) <= 1.0, "sincos(%a) within [-1, 1]", x);
+        ak_check_close(s * s + c * c, 1.0, 4 * DBL_EPSILON, "sin^2 + cos^2 at %a", x);
+    }
+    /* Known values (correctly rounded, from mpmath): sin 1e22 (the classic test of huge-argument
+     * reduction) and the doubles nearest pi and pi/2. */
+    check_same(sin_of(1e22), -0x1.b453ab76bf397p-1, "sin", 1e22);
+    check_same(sin_of(pi), 0x1.1a62633145c07p-53, "sin", pi);
+    check_same(cos_of(pio2), 0x1.1a62633145c07p-54, "cos", pio2);
+
+    /* atan (F.9.1.3) */
+    check_same(ak_atan(0.0), 0.0, "atan", 0.0);
+    check_same(ak_atan(-0.0), -0.0, "atan", -0.0);
+    check_same(ak_atan(tiny), tiny, "atan", tiny);
+    check_same(ak_atan(inf), pio2, "atan", inf);
+    check_same(ak_atan(-inf), -pio2, "atan", -inf);
+    check_same(ak_atan(nan_value), nan_value, "atan", nan_value);
+    check_same(ak_atan(1.0), pio4, "atan", 1.0);
+    check_same(ak_atan(-1.0), -pio4, "atan", -1.0);
+    check_same(ak_atan(DBL_MAX), pio2, "atan", DBL_MAX);
+
+    /* atan2 (F.9.1.4): every signed zero and infinity combination. */
+    const struct { double y, x, expected; } atan2_cases[] = {
+        {0.0, 0.0, 0.0}, {-0.0, 0.0, -0.0}, {0.0, -0.0, pi}, {-0.0, -0.0, -pi},
+        {0.0, 1.0, 0.0}, {-0.0, 1.0, -0.0}, {0.0, -1.0, pi}, {-0.0, -1.0, -pi},
+        {1.0, 0.0, pio2}, {1.0, -0.0, pio2}, {-1.0, 0.0, -pio2}, {-1.0, -0.0, -pio2},
+        {1.0, -inf, pi}, {-1.0, -inf, -pi}, {1.0, inf, 0.0}, {-1.0, inf, -0.0},
+        {inf, 1.0, pio2}, {-inf, 1.0, -pio2}, {inf, -1.0, pio2}, {-inf, -1.0, -pio2},
+        {inf, -inf, AK_THREE_PIO4}, {-inf, -inf, -AK_THREE_PIO4}, {inf, inf, pio4}, {-inf, inf, -pio4},
+        {0.0, inf, 0.0}, {-0.0, -inf, -pi}, {inf, 0.0, pio2}, {-inf, -0.0, -pio2},
+        {1.0, 1.0, pio4}, {-1.0, -1.0, -AK_THREE_PIO4}, {DBL_MAX, DBL_MAX, pio4},
+        {tiny, tiny, pio4}, {tiny, 1.0, tiny}, {1.0, DBL_MAX, 0x1p-1024}, {tiny, -1.0, pi},
+        {DBL_MAX, tiny, pio2}, {nan_value, 1.0, nan_value}, {1.0, nan_value, nan_value},
+    };
+    for (size_t i = 0; i < sizeof atan2_cases / sizeof atan2_cases[0]; i++) {
+        check_same2(ak_atan2(atan2_cases[i].y, atan2_cases[i].x), atan2_cases[i].expected, "atan2",
+                    atan2_cases[i].y, atan2_cases[i].x);
+    }
+    /* atan2(y, x) = atan(y/x) for x > 0 when y/x is exact. */
+    check_same2(ak_atan2(3.0, 6.0), ak_atan(0.5), "atan2", 3.0, 6.0);
+
+    /* asin and acos (F.9.1.1, F.9.1.2) */
+    check_same(ak_asin(0.0), 0.0, "asin", 0.0);
+    check_same(ak_asin(-0.0), -0.0, "asin", -0.0);
+    check_same(ak_asin(tiny), tiny, "asin", tiny);
+    check_same(ak_asin(1.0), pio2, "asin", 1.0);
+    check_same(ak_asin(-1.0), -pio2, "asin", -1.0);
+    check_same(ak_acos(1.0), 0.0, "acos", 1.0);
+    check_same(ak_acos(-1.0), pi, "acos", -1.0);
+    check_same(ak_acos(0.0), pio2, "acos", 0.0);
+    check_same(ak_acos(-0.0), pio2, "acos", -0.0);
+    check_same(ak_asin(0.5), 0x1.0c152382d7366p-1, "asin", 0.5); /* pi/6, rounded */
+    check_same(ak_acos(0.5), 0x1.0c152382d7366p+0, "acos", 0.5); /* pi/3, rounded */
+    const double outside[] = {1.0 + DBL_EPSILON, -2.0, inf, -inf, nan_value};
+    for (int i = 0; i < 5; i++) {
+        const double a = ak_asin(outside[i]), c = ak_acos(outside[i]);
+        ak_check(a != a && c != c, "asin, acos(%a) give NaN (got %a, %a)", outside[i], a, c);
+    }
+
+    printf("test_elementary: %d checks, %d failed\n", ak_check_count(), ak_check_failures());
+    return ak_check_exit_status();
+}
