@@ -166,7 +166,7 @@ double ak_asin(double x) {
         if (ax == 1.0) {
             return sign_bit(x) ? -AK_PIO2_HI : AK_PIO2_HI;
         }
-        return (x - x) / (x - x); /* NaN, invalid for |x| > 1 */
+        return (x - x) * INFINITY; /* NaN, invalid for |x| > 1: 0 inf */
     }
     if (ax < 0x1p-26) { /* asin x = x + x^3/6 rounds to x; keeps -0 and subnormals */
         return x;
@@ -188,7 +188,7 @@ double ak_acos(double x) {
         if (x == -1.0) {
             return AK_PI_HI;
         }
-        return (x - x) / (x - x);
+        return (x - x) * INFINITY;
     }
     if (ax < 0x1p-57) { /* pi/2 - x rounds to pi/2 */
         return AK_PIO2_HI;
