@@ -24,20 +24,15 @@ static int sign_bit(double x) {
     return (int)(bits >> 63);
 }
 
-/* base + sign atan(n / d) for quadrant q (HEAD_HI), n = nh + nl, d = dh + dl, 0 < n <= d,
- * rounded once, with nh and dh between 2^-600 and 2^600 and n/d >= 2^-61 (no product below
- * overflows or underflows). The quotient t = nh/dh is corrected by its exact residual (Dekker's
- * product, no fma): n/d = t + e. Then atan(t + e) = atan(c) + s h + a_2 h^2 + ... about the
- * centre c of t's interval, h = t - c exact (Sterbenz), s h formed exactly from a 26-bit slope;
- * on [0, 1/32) the odd minimax polynomial. Only the final addition rounds at the last bit. */
+/* base + sign atan(t + e) for quadrant q (HEAD_HI), 0 <= t <= 1, |e| <= 2^-52 t (taken into
+ * account when with_e: a constant, so the branch folds away), rounded once:
+ * atan(t + e) = atan(c) + s h + a_2 h^2 + ... about the centre c of t's interval, h = t - c exact
+ * (Sterbenz), s h formed exactly from a 26-bit slope; on [0, 1/32) the odd minimax polynomial.
+ * Only the final addition rounds at the last bit. */
 #if defined(__GNUC__)
-__attribute__((always_inline)) /* atan2's usual path then folds the zero low parts away */
+__attribute__((always_inline)) /* atan2's and atan's usual paths: no call, constants folded */
 #endif
-static inline double arc_from_ratio(double nh, double nl, double dh, double dl, int q) {
-    const double t = nh / dh;
-    double p, pe;
-    ak_two_prod(t, dh, &p, &pe);
-    const double e = (((nh - p) - pe) + nl - t * dl) / dh; /* nh - p is exact (Sterbenz) */
+static inline double arc_kernel(double t, double e, int with_e, int q) {
     const double sign = SIGN[q];
     const int j = (int)(t * 32.0);
     double s, se, tail;
@@ -46,7 +41,7 @@ static inline double arc_from_ratio(double nh, double nl, double dh, double dl, 
         const double poly = (t * z) * (AK_ATAN_A0 + z * (AK_ATAN_A1 + z * (AK_ATAN_A2
                           + z * AK_ATAN_A3)));
         ak_two_sum(HEAD_HI[q][0], sign * t, &s, &se);
-        tail = (e - e * z) + poly; /* atan'(t) = 1 - t^2 + ... */
+        tail = with_e ? (e - e * z) + poly : poly; /* atan'(t) = 1 - t^2 + ... */
     } else {
         const double h = t - CENTRE[j];
         double h_hi, h_lo;
@@ -56,9 +51,27 @@ static inline double arc_from_ratio(double nh, double nl, double dh, double dl, 
                           + h * (a[5] + h * (a[6] + h * (a[7] + h * a[8]))))))));
         ak_two_sum(HEAD_HI[q][j], sign * (SLOPE_HI[j] * h_hi), &s, &se);
         /* e times atan'(t) = s + 2 a_2 h + ..., to far below the last bit */
-        tail = ((SLOPE_HI[j] * h_lo + SLOPE_LO[j] * h) + poly) + e * (SLOPE_HI[j] + 2.0 * a[0] * h);
+        tail = (SLOPE_HI[j] * h_lo + SLOPE_LO[j] * h) + poly;
+        if (with_e) {
+            tail = tail + e * (SLOPE_HI[j] + 2.0 * a[0] * h);
+        }
     }
     return s + (se + (HEAD_LO[q][j] + sign * tail));
+}
+
+/* base + sign atan(n / d) for quadrant q, n = nh + nl, d = dh + dl, 0 < n <= d, with nh and dh
+ * between 2^-600 and 2^600 and n/d >= 2^-61 (no product below overflows or underflows). The
+ * quotient t = nh/dh is corrected by its exact residual (Dekker's product, no fma): n/d = t + e,
+ * so its rounding never reaches the result. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline double arc_from_ratio(double nh, double nl, double dh, double dl, int q) {
+    const double t = nh / dh;
+    double p, pe;
+    ak_two_prod(t, dh, &p, &pe);
+    const double e = (((nh - p) - pe) + nl - t * dl) / dh; /* nh - p is exact (Sterbenz) */
+    return arc_kernel(t, e, 1, q);
 }
 
 double ak_atan(double x) {
@@ -76,7 +89,7 @@ double ak_atan(double x) {
     if (ax < 0x1p-27) { /* atan x = x - x^3/3 rounds to x; keeps -0 and subnormals */
         return x;
     }
-    const double r = arc_from_ratio(ax, 0.0, 1.0, 0.0, 0);
+    const double r = arc_kernel(ax, 0.0, 0, 0); /* t = x exactly: no correction */
     return sign_bit(x) ? -r : r;
 }
 
@@ -153,7 +166,7 @@ double ak_asin(double x) {
         if (ax == 1.0) {
             return sign_bit(x) ? -AK_PIO2_HI : AK_PIO2_HI;
         }
-        return (x - x) / (x - x); /* NaN, invalid for |x| > 1 */
+        return (x - x) * INFINITY; /* NaN, invalid for |x| > 1: 0 inf */
     }
     if (ax < 0x1p-26) { /* asin x = x + x^3/6 rounds to x; keeps -0 and subnormals */
         return x;
@@ -175,7 +188,7 @@ double ak_acos(double x) {
         if (x == -1.0) {
             return AK_PI_HI;
         }
-        return (x - x) / (x - x);
+        return (x - x) * INFINITY;
     }
     if (ax < 0x1p-57) { /* pi/2 - x rounds to pi/2 */
         return AK_PIO2_HI;

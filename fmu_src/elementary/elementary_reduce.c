@@ -73,15 +73,12 @@ unsigned ak_reduce_pio2_huge(double x, double *hi, double *lo) {
     if (f0 >> 63) { /* fraction >= 1/2: the next n, and r = -(1 - fraction) */
         n = (n + 1u) & 3u;
         negative_r = 1;
-        f0 = ~f0;
-        f1 = ~f1;
+        /* 2^192 - f0:f1:f2 = ~f0:~f1:~f2 + 1, the carry rippling through zero words */
+        const uint64_t carry2 = f2 == 0u ? 1u : 0u;
+        const uint64_t carry1 = (carry2 != 0u && f1 == 0u) ? 1u : 0u;
         f2 = ~f2 + 1u;
-        if (f2 == 0u) {
-            f1 += 1u;
-            if (f1 == 0u) {
-                f0 += 1u;
-            }
-        }
+        f1 = ~f1 + carry2;
+        f0 = ~f0 + carry1;
     }
     /* The fraction f0:f1:f2 2^-192, normalized: its top 106 bits as h + l. */
     int shift = 0;
