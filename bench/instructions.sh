@@ -4,11 +4,21 @@
 # independent of the machine's load. Arguments: the driver's command, with STEPS where the step
 # count goes.
 instructions_per_step() {
-  local small=${AK_SMALL_STEPS:-10000} large=${AK_LARGE_STEPS:-110000} a b
-  a=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$small}" 2>&1 |
-      sed -n 's/.*Collected : //p')
-  b=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$large}" 2>&1 |
-      sed -n 's/.*Collected : //p')
+  local small=${AK_SMALL_STEPS:-10000} large=${AK_LARGE_STEPS:-110000} a b out
+  # A driver that fails (a check before timing, an FMU that refuses a call) gives no count: its
+  # exit status is the client's (valgrind passes it on).
+  if ! out=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$small}" 2>&1); then
+    echo "instructions_per_step: the driver failed: $*" >&2
+    echo "$out" | grep -v '^==' | tail -5 >&2
+    return 1
+  fi
+  a=$(echo "$out" | sed -n 's/.*Collected : //p')
+  if ! out=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "${@//STEPS/$large}" 2>&1); then
+    echo "instructions_per_step: the driver failed: $*" >&2
+    echo "$out" | grep -v '^==' | tail -5 >&2
+    return 1
+  fi
+  b=$(echo "$out" | sed -n 's/.*Collected : //p')
   if [ -z "$a" ] || [ -z "$b" ]; then
     echo "instructions_per_step: callgrind gave no count for: $*" >&2
     return 1

@@ -53,20 +53,24 @@ static inline unsigned ak_reduce_pio2(double x, double *hi, double *lo) {
 
 /* sin(r + rl) and cos(r + rl) for |r| <= 0.786, |rl| <= 2^-52 |r|, z = r^2 = zh + zl exactly. */
 static inline double ak_sin_kernel(double r, double rl, double zh) {
-    const double p = AK_SIN_S0 + zh * (AK_SIN_S1 + zh * (AK_SIN_S2 + zh * (AK_SIN_S3
-                   + zh * (AK_SIN_S4 + zh * (AK_SIN_S5 + zh * AK_SIN_S6)))));
+    /* Estrin's scheme: the same polynomial in a third of Horner's chain of dependent operations
+     * (it only adds a small correction to r, so its own rounding hardly shows). */
+    const double z2 = zh * zh, z4 = z2 * z2;
+    const double p = ((AK_SIN_S0 + zh * AK_SIN_S1) + z2 * (AK_SIN_S2 + zh * AK_SIN_S3))
+                   + z4 * ((AK_SIN_S4 + zh * AK_SIN_S5) + z2 * AK_SIN_S6);
     /* sin(r + rl) = sin r + rl cos r; the tail is at most a tenth of r. */
     return r + ((r * zh) * p + rl * (1.0 - 0.5 * zh));
 }
 
 static inline double ak_cos_kernel(double r, double rl, double zh, double zl) {
-    const double p = AK_COS_C0 + zh * (AK_COS_C1 + zh * (AK_COS_C2 + zh * (AK_COS_C3
-                   + zh * (AK_COS_C4 + zh * AK_COS_C5))));
+    const double z2 = zh * zh, z4 = z2 * z2;
+    const double p = ((AK_COS_C0 + zh * AK_COS_C1) + z2 * (AK_COS_C2 + zh * AK_COS_C3))
+                   + z4 * (AK_COS_C4 + zh * AK_COS_C5);
     const double hz = 0.5 * zh;
     const double w = 1.0 - hz;
     /* 1 - hz rounded to w, its error (1 - w) - hz recovered exactly (Sterbenz twice), and the
      * exact square's low part: 1 - z/2 is as good as double-double before the final sum. */
-    const double tail = (((1.0 - w) - hz) - 0.5 * zl) + ((zh * zh) * p - r * rl);
+    const double tail = (((1.0 - w) - hz) - 0.5 * zl) + (z2 * p - r * rl);
     return w + tail;
 }
 
@@ -80,6 +84,8 @@ static inline double ak_cos_kernel(double r, double rl, double zh, double zl) {
 /* *s = sin x, *c = cos x, with one argument reduction. */
 static AK_ELEMENTARY_INLINE void ak_sincos(double x, double *s, double *c) {
     const double ax = fabs(x);
+    double hi, lo;
+    unsigned n = 0;
     if (ax < 0x1.921fb54442d18p-1) { /* pi/4 rounded down: no reduction */
         if (ax < 0x1p-27) {
             /* sin x = x and cos x = 1 to the last bit; keeps the sign of -0. */
@@ -87,18 +93,34 @@ static AK_ELEMENTARY_INLINE void ak_sincos(double x, double *s, double *c) {
             *c = 1.0;
             return;
         }
-        double zh, zl;
-        ak_two_square(x, &zh, &zl);
-        *s = ak_sin_kernel(x, 0.0, zh);
-        *c = ak_cos_kernel(x, 0.0, zh, zl);
-        return;
-    }
-    if (!(ax <= 0x1.fffffffffffffp+1023)) { /* inf or NaN: NaN */
+        hi = x;
+        lo = 0.0;
+    } else if (ax < 0x1p20) {
+        /* The usual reduction (the models' angles): x - k P1 and k P2 exact as in ak_reduce_pio2,
+         * one rounded subtraction whose error Fast2Sum keeps (|r| > |k P2| once |hi| >= 2^-10),
+         * k P3 rounded and k P4 left out: hi + lo within 2^-74 |hi|, renormalized so that
+         * |lo| <= ulp(hi)/2. A shorter chain of operations than the exact reduction, which
+         * takes the rare arguments near a multiple of pi/2. */
+        const double shifter = 0x1.8p52; /* adding it rounds to an integer */
+        const double k = (x * AK_TWO_OVER_PI + shifter) - shifter;
+        const double r = x - k * AK_PIO2_1;
+        const double w = k * AK_PIO2_2;
+        const double y = r - w;
+        if (fabs(y) >= 0x1p-10) {
+            const double tail = ((r - y) - w) - k * AK_PIO2_3;
+            hi = y + tail;
+            lo = (y - hi) + tail;
+            n = (unsigned)(int)k & 3u;
+        } else {
+            n = ak_reduce_pio2(x, &hi, &lo);
+        }
+    } else if (ax <= 0x1.fffffffffffffp+1023) {
+        n = ak_reduce_pio2_huge(x, &hi, &lo);
+    } else { /* inf or NaN: NaN */
         *s = *c = x - x;
         return;
     }
-    double hi, lo, zh, zl;
-    const unsigned n = ak_reduce_pio2(x, &hi, &lo);
+    double zh, zl;
     ak_two_square(hi, &zh, &zl);
     const double sr = ak_sin_kernel(hi, lo, zh), cr = ak_cos_kernel(hi, lo, zh, zl);
     switch (n) {
