@@ -12,7 +12,8 @@
 #      anchor (bench/bench_sequences_fmu.c), in time and, with callgrind, in instructions;
 #   5. AttitudePropagator (bench/bench_attitude.c): set omega + doStep + get q (and theta), FMI 2
 #      and FMI 3, vs. the bare quaternion update (and the update + angle extraction), frozen
-#      copies in bench/attitude_anchor.c, over the largest step count of --steps.
+#      copies in bench/attitude_anchor.c, over the largest step count of --steps;
+#   6. the project's sincos beside the C library's sin and cos (bench/bench_sincos.c).
 # The anchors every ratio is to do not move with the FMU (issue 24): the hand-written 1-2-3
 # formula (tests/c/kinematics_123.c) and the bare quaternion update; the general core is a figure
 # of its own. Unless --quick or --no-previous, the previous release's binaries
@@ -221,4 +222,7 @@ sequence_callgrind_table() {
   # AttitudePropagator (bench/bench_attitude.c): one CS step beside the bare quaternion update.
   build/bench/bench_attitude "$ap_so" --fmi3 "$ap3_so" \
     --steps "${steps##*,}" --repeats "$repeats" "${previous_ap[@]}"
+  echo
+  # The project's sincos beside the C library's (bench/bench_sincos.c).
+  build/bench/bench_sincos --calls "$(awk -v c="$calls" 'BEGIN { print (c < 4096 ? 4096 : 40 * c) }')" --repeats "$repeats"
 } | tee build/last-run.md

@@ -3,7 +3,7 @@ sequences, the declared types and the source files of the core and the FMI layer
 its own description (fmu_src/models/<Model>/description.py); `python -m codegen` writes every file
 that repeats these facts (docs/architecture.md lists them)."""
 
-VERSION = "0.3.0"
+VERSION = "0.4.0"
 AUTHOR = "AngularKinematics developers"
 
 # name, description: the order is the order of the C enum ak_log_category and of <LogCategories>.

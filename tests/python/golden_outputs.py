@@ -1,7 +1,8 @@
 """Outputs of the FMUs over seeded random states, as SHA-256 digests per sequence (and frame):
 the record that proves a rebuilt FMU computes bit for bit what the released one did.
 
-    .venv/bin/python tests/python/golden_outputs.py record DIR_WITH_FMUS tests/python/data/golden_0.2.json
+    .venv/bin/python tests/python/golden_outputs.py record DIR_WITH_FMUS tests/python/data/golden_0.4.json
+    .venv/bin/python tests/python/golden_outputs.py compare DIR_WITH_FMUS DIR_WITH_OLD_BINARIES
 
 The record holds, per model, the names of the outputs the recorded FMU had ("outputs", in
 value-reference order) and the digests of those outputs ("digests"). test_bit_identity.py

@@ -11,7 +11,7 @@ import pytest
 
 from golden_outputs import MODELS_RECORDED, digests
 
-RELEASE = "0.2"
+RELEASE = "0.4"
 RECORD = json.loads((pathlib.Path(__file__).parent / "data" / f"golden_{RELEASE}.json").read_text())
 
 
