@@ -66,24 +66,14 @@ static void evaluate_lazy(ak_model_data *data) {
     memcpy(&v[KIN_VR_R], &out, sizeof out);
 }
 
-/* A 3x3 output, row-major at value reference vr, as the matrix the core writes. */
-static double (*matrix_at(double *v, unsigned int vr))[3] {
-    return (double (*)[3])&v[vr];
-}
-
-/* A read of lazy outputs after an input changed: every output from one chain, written in place. */
+/* A read of lazy outputs after an input changed: the main group by the sequence's kernel, then
+ * the lazy one. Not the general kernel's one chain for all of them: its omega and alpha can differ
+ * from the sequence kernel's in the sign of an exact zero, and a value must not depend on what
+ * else was read. */
 static ak_eval_status evaluate_all(ak_model_data *data) {
-    double *v = data->values;
-    ak_sines sines, half;
-    ak_angle_sines(&v[KIN_VR_THETA], &sines);
-    memcpy(data->work, &sines, sizeof sines);
-    ak_half_angle_sines(&sines, &half);
-    ak_general_all_outputs(sequence_of(data), &sines, &half, &v[KIN_VR_THETA_DOT],
-                           &v[KIN_VR_THETA_DDOT], &v[KIN_VR_OMEGA_FIXED], &v[KIN_VR_OMEGA_BODY],
-                           &v[KIN_VR_ALPHA_FIXED], &v[KIN_VR_ALPHA_BODY], matrix_at(v, KIN_VR_R),
-                           &v[KIN_VR_Q], matrix_at(v, KIN_VR_W_FIXED), matrix_at(v, KIN_VR_W_BODY),
-                           matrix_at(v, KIN_VR_W_FIXED_DOT), matrix_at(v, KIN_VR_W_BODY_DOT));
-    return AK_EVAL_OK;
+    const ak_eval_status status = evaluate(data);
+    evaluate_lazy(data);
+    return status;
 }
 
 static void jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,

@@ -242,7 +242,7 @@ static ak_eval_status step(ak_model_data *data, double h) {
         (void)attitude_norm(data);
         return AK_EVAL_FAILED;
     }
-    double w1[3], w2[3], vector[3];
+    double w1[3], vector[3];
     double q[4] = {q_now[0], q_now[1], q_now[2], q_now[3]};
     bool derivatives_given = false, first = false;
     const bool omega_dot_given = v[AP_VR_OMEGA_DOT] != 0.0 || v[AP_VR_OMEGA_DOT + 1] != 0.0 ||
@@ -254,6 +254,7 @@ static ak_eval_status step(ak_model_data *data, double h) {
         }
         ak_attitude_step_vector_constant(frame_of(data), &v[AP_VR_OMEGA], h, vector);
     } else {
+        double w2[3];
         acceleration(data, w1, w2);
         derivatives_given = w1[0] != 0.0 || w1[1] != 0.0 || w1[2] != 0.0 || w2[0] != 0.0 ||
                             w2[1] != 0.0 || w2[2] != 0.0;
