@@ -227,9 +227,14 @@ static void elementary(int a, double x, double E[3][3]) {
     E[after][after] = co;
 }
 
-/* x + 2 pi n nearest to reference. */
+/* x + 2 pi n nearest to reference. Within 3 of it, n is a zero of the sign of reference - x
+ * (nearbyint of a quotient below 1/2 in size), so x + (reference - x) 0 is the same bits. */
 static double unwrap(double x, double reference) {
-    return x + TWO_PI * nearbyint((reference - x) / TWO_PI);
+    const double gap = reference - x;
+    if (fabs(gap) < 3.0) {
+        return x + gap * 0.0;
+    }
+    return x + TWO_PI * nearbyint(gap / TWO_PI);
 }
 
 /* theta_k of chain angle m (sequences.h): reversed for space-fixed sequences. */
@@ -296,14 +301,27 @@ bool ak_attitude_angles(const ak_sequence *sequence, double R[3][3],
         }
         return false;
     }
-    const double other_middle = c.proper ? -phi[1] : PI - phi[1];
-    sets[1][0] = sets[0][0] + PI;
-    sets[1][1] = other_middle;
-    sets[1][2] = sets[0][2] + PI;
-    for (int s = 0; s < 2; s++) {
+    const double principal_set[3] = {sets[0][0], sets[0][1], sets[0][2]};
+    bool near = true;
+    for (int k = 0; k < 3; k++) {
+        sets[0][k] = unwrap(sets[0][k], previous[k]);
+        near = near && fabs(sets[0][k] - previous[k]) < 0.5 && fabs(previous[k]) < 1e9;
+    }
+    if (near) {
+        /* The other set is pi away in theta1 and theta3 (section 5): at squared distance above
+         * 2 (pi - 1/2)^2 > 3/4, the most this one can have; sizes below 1e9 keep the rounding
+         * of the unwrapping far below that margin. */
         for (int k = 0; k < 3; k++) {
-            sets[s][k] = unwrap(sets[s][k], previous[k]);
+            theta[k] = sets[0][k];
         }
+        return false;
+    }
+    const double other_middle = c.proper ? -phi[1] : PI - phi[1];
+    sets[1][0] = principal_set[0] + PI;
+    sets[1][1] = other_middle;
+    sets[1][2] = principal_set[2] + PI;
+    for (int k = 0; k < 3; k++) { /* sets[0] is unwrapped above */
+        sets[1][k] = unwrap(sets[1][k], previous[k]);
     }
     const int best = squared_distance(sets[1], previous) < squared_distance(sets[0], previous);
     for (int k = 0; k < 3; k++) {
