@@ -16,6 +16,7 @@ set(AK_CORE_HEADERS
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude.h
   fmu_src/elementary/elementary.h
+  fmu_src/elementary/elementary_sincos_three.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_COMMON_SOURCES

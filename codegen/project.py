@@ -72,7 +72,8 @@ CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c", "core/kinematic
                 "elementary/elementary_reduce.c", "elementary/elementary_arctangent.c"]
 CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h", "core/kinematics_sequences.h",
                 "core/kinematics_general_jacobian.h", "core/attitude.h",
-                "elementary/elementary.h", "elementary/elementary_double_double.h",
+                "elementary/elementary.h", "elementary/elementary_sincos_three.h",
+                "elementary/elementary_double_double.h",
                 "elementary/elementary_coefficients.h"]
 # The FMI runtime under both FMI layers (fmu_src/runtime/), FMI-independent.
 RUNTIME_SOURCES = ["runtime/instance.c", "runtime/outputs.c", "runtime/lifecycle.c",

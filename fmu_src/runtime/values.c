@@ -233,23 +233,43 @@ AK_NOINLINE static ak_status get_reals_checked(ak_instance *instance, const ak_f
     return status;
 }
 
+/* The get of a run of consecutive value references of known variables, into *status; false
+ * (nothing done) for any other. Inline: called with a constant nvr, the compiler inlines the
+ * comparison and the copy instead of calling memcmp and memcpy. */
+static AK_ALWAYS_INLINE bool get_run(ak_instance *instance, const unsigned int vr[], size_t nvr,
+                                     double value[], ak_status *status) {
+    if (!consecutive(vr, nvr)) {
+        return false;
+    }
+    const unsigned int roles = ak_real_roles_of_run(instance, vr[0], nvr);
+    if ((roles & (1u << AK_REAL_ABSENT)) != 0) {
+        return false;
+    }
+    *status = update_for(instance, roles, vr, nvr);
+    memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
+    return true;
+}
+
+/* A run of four vectors of 3, the get masters most often make at a communication point (two
+ * vectors in two frames): with this count a constant, the copy is inlined. Any other count
+ * takes the same path with a variable count. */
+enum { USUAL_RUN = 12 };
+
 ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, double value[]) {
     /* The usual gets, untraced: consecutive value references of known variables, or the same
      * runs as the last get of a few runs (kept only when every value reference was known). */
     if (ak_call_passes(instance, call) && vr != NULL && value != NULL) {
-        if (consecutive(vr, nvr)) {
-            const unsigned int roles = ak_real_roles_of_run(instance, vr[0], nvr);
-            if ((roles & (1u << AK_REAL_ABSENT)) == 0) {
-                const ak_status status = update_for(instance, roles, vr, nvr);
-                memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
-                return status;
-            }
-        } else {
+        ak_status status;
+        if (nvr == USUAL_RUN ? get_run(instance, vr, USUAL_RUN, value, &status)
+                             : get_run(instance, vr, nvr, value, &status)) {
+            return status;
+        }
+        if (!consecutive(vr, nvr)) {
             const ak_get_runs *last = &instance->last_runs;
             if (nvr > 0 && nvr == last->nvr && last->n_runs > 0 &&
                 memcmp(vr, last->vr, nvr * sizeof vr[0]) == 0) {
-                const ak_status status = update_for(instance, last->roles, vr, nvr);
+                status = update_for(instance, last->roles, vr, nvr);
                 for (size_t r = 0, i = 0; r < last->n_runs; i += last->lengths[r++]) {
                     memcpy(&value[i], &instance->data.values[vr[i]],
                            last->lengths[r] * sizeof value[0]);

@@ -2,6 +2,7 @@
  * (F.9.1, F.9.4) bit for bit, signed zeros included, and exact relations that every correct
  * implementation meets. Accuracy against mpmath: tests/python/test_elementary_accuracy.py. */
 #include "elementary.h"
+#include "elementary_sincos_three.h"
 #include "test_check.h"
 
 #include <float.h>
@@ -23,6 +24,62 @@ static void check_same(double got, double expected, const char *what, double arg
 static void check_same2(double got, double expected, const char *what, double y, double x) {
     const int ok = (got != got && expected != expected) || bits_of(got) == bits_of(expected);
     ak_check(ok, "%s(%a, %a): got %a, expected %a", what, y, x, got, expected);
+}
+
+/* ak_sincos_three_usual against ak_sincos at x, y, z: the same bits when it takes the usual
+ * path; returns whether it did (false: it must have written nothing). */
+static bool three_same_as_one(double x, double y, double z) {
+    const double in[3] = {x, y, z};
+    double s[3] = {7.0, 7.0, 7.0}, c[3] = {7.0, 7.0, 7.0};
+    const bool usual = ak_sincos_three_usual(in, s, c);
+    for (int k = 0; k < 3; k++) {
+        double s1, c1;
+        ak_sincos(in[k], &s1, &c1);
+        if (usual) {
+            check_same(s[k], s1, "three sin", in[k]);
+            check_same(c[k], c1, "three cos", in[k]);
+        } else {
+            ak_check(s[k] == 7.0 && c[k] == 7.0, "three at %a: nothing written off the usual path",
+                     in[k]);
+        }
+    }
+    return usual;
+}
+
+/* Every edge of ak_sincos's usual paths, and many angles of every size in both signs: the
+ * three-angle form gives ak_sincos's bits, and takes the usual path for the angles of a model. */
+static void check_sincos_three(void) {
+    const double edges[] = {0x1p-27, 0x1.fffffffffffffp-28, 0x1p-10, 0x1.921fb54442d18p-1,
+                            0x1.921fb54442d17p-1, 0x1.921fb54442d19p-1, 0x1p20, 0x1.fffffffffffffp19,
+                            AK_PIO2_HI, AK_PI_HI, 3 * AK_PIO2_HI, 2 * AK_PI_HI, 0.0, 1.0, 3.0};
+    const size_t n_edges = sizeof edges / sizeof edges[0];
+    for (size_t i = 0; i < n_edges; i++) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            const double e = sign * edges[i];
+            (void)three_same_as_one(e, 0.5, -2.0);
+            (void)three_same_as_one(1.0, e, 2.5);
+            (void)three_same_as_one(-3.0, 0.25, e);
+            /* Near a multiple of pi/2 by about the short reduction's bound 2^-10. */
+            (void)three_same_as_one(e + 0x1p-10, e - 0x1p-10, e + 0x1.0001p-10);
+        }
+    }
+    ak_check(!three_same_as_one(1.0, INFINITY, 2.0) && !three_same_as_one(NAN, 1.0, 2.0) &&
+                 !three_same_as_one(1.0, 2.0, 1e22) && !three_same_as_one(0x1p-30, 1.0, 2.0),
+             "non-finite, huge and tiny angles off the usual path");
+    uint64_t state = 0x2545F4914F6CDD1Dull;
+    int usual = 0, n = 0;
+    for (; n < 200000; n++) {
+        double x[3];
+        for (int k = 0; k < 3; k++) {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            const double unit = (double)(state >> 11) / 9007199254740992.0; /* [0, 1) */
+            /* Angles within [-pi, pi] for two thirds of the draws, of any size below 2^21 else. */
+            const double size = (n % 3 != 0) ? AK_PI_HI : ldexp(1.0, (int)(state % 50) - 29);
+            x[k] = (2.0 * unit - 1.0) * size;
+        }
+        usual += three_same_as_one(x[0], x[1], x[2]);
+    }
+    ak_check(usual > n / 2, "the usual path taken for most angles (%d of %d)", usual, n);
 }
 
 static double sin_of(double x) { return ak_sin(x); }
@@ -64,6 +121,8 @@ int main(void) {
     check_same(sin_of(1e22), -0x1.b453ab76bf397p-1, "sin", 1e22);
     check_same(sin_of(pi), 0x1.1a62633145c07p-53, "sin", pi);
     check_same(cos_of(pio2), 0x1.1a62633145c07p-54, "cos", pio2);
+
+    check_sincos_three();
 
     /* atan (F.9.1.3) */
     check_same(ak_atan(0.0), 0.0, "atan", 0.0);
