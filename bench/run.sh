@@ -101,8 +101,9 @@ machine() {
   echo "Date: $(date -u '+%Y-%m-%d %H:%M UTC'); load average: $(cut -d' ' -f1-3 /proc/loadavg)"
   if command -v objdump >/dev/null 2>&1; then
     # The driver's bare core is ak_general_angular_kinematics for body123, inlined into its
-    # timing loop; the FMU runs the same code through the model's evaluate, evaluate_all (every
-    # output after an input changed) and evaluate_lazy (the lazy group after a main read).
+    # timing loop; the FMU runs its sequence kernel through the model's evaluate, evaluate_all
+    # (every output after an input changed: evaluate, then evaluate_lazy) and evaluate_lazy (the
+    # lazy group after a main read).
     echo "Calls in the driver's core loop time_core (core inlined): $(calls_in "$driver" time_core)"
     echo "Calls in the FMU's evaluate: $(calls_in "$fmu_so" evaluate)"
     echo "Calls in the FMU's evaluate_all: $(calls_in "$fmu_so" evaluate_all)"

@@ -25,14 +25,8 @@ for model in "${models[@]}"; do
   echo "check_static: cppcheck: 0 findings in the sources of $model"
 done
 
-# The entry points the importer calls through the shared library, by name, from the standard's
-# own list (the FMI2_Export declarations of fmi2Functions.h): nothing in the sources calls them.
-suppressions=$(mktemp)
-trap 'rm -f "$suppressions"' EXIT
-{
-  echo '<?xml version="1.0"?>'
-  echo '<suppressions>'
-  echo '  <!-- Reason: an FMI 2.0 entry point, called by the importer, never by the FMU itself. -->'
+# The core's functions the FMU sources do not call, each with its reason: exempt in both runs.
+core_exemptions() {
   echo '  <!-- Reason: the core'"'"'s one-call API; the FMU uses its _of_sines form, the C tests and the'
   echo '       benchmark'"'"'s bare kernel call it (tests/c, bench/ are not in this run). -->'
   echo '  <suppress><id>unusedFunction</id><symbolName>ak_general_angular_kinematics</symbolName></suppress>'
@@ -46,6 +40,17 @@ trap 'rm -f "$suppressions"' EXIT
   for symbol in ak_atan ak_asin ak_acos; do
     echo "  <suppress><id>unusedFunction</id><symbolName>$symbol</symbolName></suppress>"
   done
+}
+
+# The entry points the importer calls through the shared library, by name, from the standard's
+# own list (the FMI2_Export declarations of fmi2Functions.h): nothing in the sources calls them.
+suppressions=$(mktemp)
+trap 'rm -f "$suppressions"' EXIT
+{
+  echo '<?xml version="1.0"?>'
+  echo '<suppressions>'
+  echo '  <!-- Reason: an FMI 2.0 entry point, called by the importer, never by the FMU itself. -->'
+  core_exemptions
   grep -oE 'FMI2_Export +fmi2[A-Za-z]+TYPE +fmi2[A-Za-z]+;' "$headers/fmi2Functions.h" |
     awk '{ sub(";", "", $3); printf "  <suppress><id>unusedFunction</id><symbolName>%s</symbolName></suppress>\n", $3 }'
   echo '</suppressions>'
@@ -82,19 +87,7 @@ done
   for symbol in ak_get_reals ak_set_reals ak_set_input_derivatives; do
     echo "  <suppress><id>unusedFunction</id><symbolName>$symbol</symbolName></suppress>"
   done
-  echo '  <!-- Reason: the core'"'"'s one-call API; the FMU uses its _of_sines form, the C tests and the'
-  echo '       benchmark'"'"'s bare kernel call it (tests/c, bench/ are not in this run). -->'
-  echo '  <suppress><id>unusedFunction</id><symbolName>ak_general_angular_kinematics</symbolName></suppress>'
-  echo '  <!-- Reason: the same for the attitude step and for every output in one chain (the benchmark'"'"'s'
-  echo '       all-outputs anchor): the FMU calls their parts. -->'
-  for symbol in ak_attitude_step ak_general_all_outputs; do
-    echo "  <suppress><id>unusedFunction</id><symbolName>$symbol</symbolName></suppress>"
-  done
-  echo '  <!-- Reason: the elementary functions are a complete set (fmu_src/elementary/); the models do not'
-  echo '       call every one, the accuracy test and the C tests do (tests/c is not in this run). -->'
-  for symbol in ak_atan ak_asin ak_acos; do
-    echo "  <suppress><id>unusedFunction</id><symbolName>$symbol</symbolName></suppress>"
-  done
+  core_exemptions
   grep -oE 'FMI3_Export +fmi3[A-Za-z0-9]+TYPE +fmi3[A-Za-z0-9]+;' "$headers/fmi3Functions.h" |
     awk '{ sub(";", "", $3); printf "  <suppress><id>unusedFunction</id><symbolName>%s</symbolName></suppress>\n", $3 }'
   echo '</suppressions>'

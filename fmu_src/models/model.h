@@ -117,8 +117,8 @@ typedef struct {
     /* Computes the lazy output group; NULL when there is none. Called only after evaluate
      * succeeded for the same inputs. */
     void (*evaluate_lazy)(ak_model_data *data);
-    /* Both groups at once, what evaluate then evaluate_lazy give, for less (a read of every
-     * output, which fmpy makes by default, pays one evaluation); NULL: the layer calls the two. */
+    /* Both groups in one call, bit for bit what evaluate then evaluate_lazy give (a read of every
+     * output, which fmpy makes by default, counts one evaluation); NULL: the layer calls the two. */
     ak_eval_status (*evaluate_all)(ak_model_data *data);
 
     /* Optional capabilities: NULL when the model does not have them (the FMI function then
