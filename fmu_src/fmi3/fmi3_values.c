@@ -131,7 +131,7 @@ static void copy_out(const ak_instance *instance, const fmi3ValueReference vr[],
             continue;
         }
         const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
-        memcpy(&values[k], &instance->data.values[vr[i]], n * sizeof values[0]);
+        ak_copy_values(&values[k], &instance->data.values[vr[i]], n);
         k += n;
     }
 }
@@ -290,10 +290,6 @@ static bool usual_get_kept(ak3_kept_get *kept, const fmi3ValueReference vr[], si
     return true;
 }
 
-/* Four arrays of 3, the get masters most often make at a communication point (two vectors in
- * two frames): copied with a constant count. Any other count takes memcpy. */
-enum { USUAL_GET_VALUES = 12 };
-
 fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t nValues) {
     fmi3_instance *self = c;
@@ -305,14 +301,8 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         const fmi3Status status = kept->states_only && !ak_states_follow_parameters(instance, vr, nvr)
                                       ? fmi3OK
                                       : fmi3_status(ak_instance_update(instance, kept->upto));
-        const double *first = &instance->data.values[vr[0]];
-        if (kept->one_run && nValues == USUAL_GET_VALUES) {
-            /* A constant count, copied element by element (a memcpy of it became rep movs). */
-            for (size_t k = 0; k < USUAL_GET_VALUES; k++) {
-                values[k] = first[k];
-            }
-        } else if (kept->one_run) {
-            memcpy(values, first, nValues * sizeof values[0]);
+        if (kept->one_run) {
+            ak_copy_values(values, &instance->data.values[vr[0]], nValues);
         } else {
             copy_out(instance, vr, nvr, values);
         }

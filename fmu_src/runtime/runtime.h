@@ -8,6 +8,7 @@
 #define ANGULAR_KINEMATICS_RUNTIME_H
 
 #include <stdbool.h>
+#include <string.h>
 #include <stddef.h>
 
 #include "instance.h"
@@ -118,6 +119,31 @@ static AK_ALWAYS_INLINE bool ak_scalar_call_valid(const ak_instance *instance,
     return ak_call_allowed(instance, call) &&
            (nvr == 0 || (vr != NULL && value != NULL) ||
             ak_refuse_null_array(instance, call, nvr, vr == NULL));
+}
+/* to[0 .. n - 1] := from[0 .. n - 1]. The usual counts of a get (a vector of 3, a quaternion,
+ * four vectors) with the count a constant: a few moves instead of a call of memcpy, element by
+ * element (gcc made a memcpy of 12 doubles a slow rep movs). */
+static AK_ALWAYS_INLINE void ak_copy_values(double *to, const double *from, size_t n) {
+    switch (n) {
+    case 3:
+        for (size_t k = 0; k < 3; k++) {
+            to[k] = from[k];
+        }
+        return;
+    case 4:
+        for (size_t k = 0; k < 4; k++) {
+            to[k] = from[k];
+        }
+        return;
+    case 12:
+        for (size_t k = 0; k < 12; k++) {
+            to[k] = from[k];
+        }
+        return;
+    default:
+        memcpy(to, from, n * sizeof to[0]);
+        return;
+    }
 }
 /* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
  * its arrays first (FMI 2; the FMI 3 layer expands

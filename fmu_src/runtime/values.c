@@ -31,11 +31,51 @@ static const unsigned int EVERY_VALUE_REFERENCE[AK_MAX_VARIABLES] = {
     60, 61, 62, 63, 64, 65, 66, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77, 78, 79};
 _Static_assert(AK_MAX_VARIABLES == 80, "EVERY_VALUE_REFERENCE lists them all");
 
+/* Runs up to this long are compared element by element, longer ones with one memcmp. */
+enum { SHORT_RUN = 8 };
+
 /* True when vr holds first, first + 1, .. (nvr >= 1) within the value array. */
-static bool consecutive(const unsigned int vr[], size_t nvr) {
-    return nvr > 0 && (size_t)vr[0] + nvr <= AK_MAX_VARIABLES &&
-           vr[nvr - 1] == vr[0] + nvr - 1 && /* cheap, and enough to rule most others out */
-           memcmp(vr, &EVERY_VALUE_REFERENCE[vr[0]], nvr * sizeof vr[0]) == 0;
+static AK_ALWAYS_INLINE bool consecutive(const unsigned int vr[], size_t nvr) {
+    if (nvr == 0 || (size_t)vr[0] + nvr > AK_MAX_VARIABLES ||
+        vr[nvr - 1] != vr[0] + nvr - 1) { /* cheap, and enough to rule most others out */
+        return false;
+    }
+    if (nvr > SHORT_RUN) {
+        return memcmp(vr, &EVERY_VALUE_REFERENCE[vr[0]], nvr * sizeof vr[0]) == 0;
+    }
+    bool run = true;
+    for (size_t i = 1; i + 1 < nvr; i++) {
+        run &= vr[i] == vr[0] + i;
+    }
+    return run;
+}
+
+/* Whether a and b hold the same n value references: a few compared element by element (a call
+ * of memcmp costs more), more with memcmp. */
+static AK_ALWAYS_INLINE bool same_value_references(const unsigned int a[], const unsigned int b[],
+                                                   size_t n) {
+    if (n > 2 * SHORT_RUN) {
+        return memcmp(a, b, n * sizeof a[0]) == 0;
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (a[i] != b[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* ak_store_if_finite with the count a constant for a vector or a quaternion, as copy_values. */
+static AK_ALWAYS_INLINE ak_store_result store_values(double *target, const double value[],
+                                                     size_t n) {
+    switch (n) {
+    case 3:
+        return ak_store_if_finite(target, value, 3);
+    case 4:
+        return ak_store_if_finite(target, value, 4);
+    default:
+        return ak_store_if_finite(target, value, n);
+    }
 }
 
 /* The length n (1 <= n <= nvr) of a run of consecutive value references that starts vr: found by
@@ -246,7 +286,7 @@ static AK_ALWAYS_INLINE bool get_run(ak_instance *instance, const unsigned int v
         return false;
     }
     *status = update_for(instance, roles, vr, nvr);
-    memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
+    ak_copy_values(value, &instance->data.values[vr[0]], nvr);
     return true;
 }
 
@@ -268,11 +308,10 @@ ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
         if (!consecutive(vr, nvr)) {
             const ak_get_runs *last = &instance->last_runs;
             if (nvr > 0 && nvr == last->nvr && last->n_runs > 0 &&
-                memcmp(vr, last->vr, nvr * sizeof vr[0]) == 0) {
+                same_value_references(vr, last->vr, nvr)) {
                 status = update_for(instance, last->roles, vr, nvr);
                 for (size_t r = 0, i = 0; r < last->n_runs; i += last->lengths[r++]) {
-                    memcpy(&value[i], &instance->data.values[vr[i]],
-                           last->lengths[r] * sizeof value[0]);
+                    ak_copy_values(&value[i], &instance->data.values[vr[i]], last->lengths[r]);
                 }
                 return status;
             }
@@ -386,16 +425,32 @@ AK_NOINLINE static ak_status set_reals_checked(ak_instance *instance, const ak_f
     return AK_STATUS_OK;
 }
 
+/* True when vr is a run first, first + 1, .. of inputs (value references 0 .. n_inputs - 1),
+ * compared element by element: for a run of a few, cheaper than a call of memcmp. */
+static AK_ALWAYS_INLINE bool inputs_run(const unsigned int vr[], size_t nvr, size_t n_inputs) {
+    if (nvr == 0 || nvr > n_inputs || vr[0] > n_inputs - nvr) {
+        return false;
+    }
+    bool run = true;
+    for (size_t i = 1; i < nvr; i++) {
+        run &= vr[i] == vr[0] + i;
+    }
+    return run;
+}
+
 ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, const double value[]) {
-    /* The usual set of an importer: every input in value-reference order, finite, untraced, no
-     * input derivative to forget. With the count a constant, the compiler unrolls the
-     * comparison, the check and the copy. Fewer inputs take the checked path's own usual path. */
+    /* The usual sets of an importer: a run of inputs in value-reference order (all of them, or
+     * one vector), finite, untraced, no input derivative to forget. With every input the count
+     * is a constant, so the compiler unrolls the comparison, the check and the copy. */
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
-    if (ak_call_passes(instance, call) && !instance->data.any_input_derivative &&
-        nvr == n_inputs && vr != NULL && value != NULL &&
-        memcmp(vr, EVERY_VALUE_REFERENCE, n_inputs * sizeof vr[0]) == 0) {
-        const ak_store_result stored = ak_store_if_finite(instance->data.values, value, n_inputs);
+    if (ak_call_passes(instance, call) && !instance->data.any_input_derivative && vr != NULL &&
+        value != NULL &&
+        (nvr == n_inputs ? memcmp(vr, EVERY_VALUE_REFERENCE, n_inputs * sizeof vr[0]) == 0
+                         : inputs_run(vr, nvr, n_inputs))) {
+        const ak_store_result stored =
+            nvr == n_inputs ? ak_store_if_finite(instance->data.values, value, n_inputs)
+                            : store_values(&instance->data.values[vr[0]], value, nvr);
         if (stored == AK_STORE_CHANGED) {
             ak_instance_inputs_changed(instance);
         }

@@ -94,9 +94,13 @@ static ak_eval_status evaluate(ak_model_data *data) {
     if (norm == 0.0) {
         return AK_EVAL_FAILED;
     }
-    const double unit[4] = {q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm};
     double R[3][3];
-    ak_quat_to_matrix(unit, R);
+    if (norm == 1.0) { /* as co-simulation keeps it: q / 1 is q, without four divisions */
+        ak_quat_to_matrix(q, R);
+    } else {
+        const double unit[4] = {q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm};
+        ak_quat_to_matrix(unit, R);
+    }
     double theta[3], distance;
     ak_attitude_angles(sequence_of(data), R, &v[AP_VR_THETA], theta, &distance);
     for (int k = 0; k < 3; k++) {
@@ -109,7 +113,7 @@ static ak_eval_status evaluate(ak_model_data *data) {
     }
     v[AP_VR_SINGULARITY_DISTANCE] = distance;
     v[AP_VR_ANGLES_AGE] = 0.0;
-    v[AP_VR_ANGLES_CHANGE_BOUND] = 0.0;
+    v[AP_VR_ANGLES_PATH] = 0.0;
     return AK_EVAL_OK;
 }
 
@@ -119,49 +123,36 @@ static ak_eval_status evaluate(ak_model_data *data) {
  * other than the continued one is at least pi - 1 away in two components (core/attitude.h,
  * sections 5, 6), so the nearest is the continued one, which the computation at every point
  * would also have reached (unwrap and the choice of set depend on the reference only through
- * that). A step of rotation angle a, ending at singularity distance d, moves each angle by at
- * most a / (d - a): |theta_dot_m| <= |omega| / |det W| (a row of W^-1 is a cross product of two
- * unit axes over det W), and d changes by at most the rotation angle. a <= pi |q_new - q_old|,
- * taken as 4 |q_new - q_old|. */
-static const double ANGLES_CHANGE_LIMIT = 1.0;
-
-/* The entry of R(q) whose size gives the singularity distance d = sqrt(1 - r^2) of the
- * sequence: R[i][i] (proper Euler) or R[i][k] (Tait-Bryan), i, j, k the chain's axes as in
- * core/attitude.c's principal angles. */
-static double distance_entry(const ak_sequence *sequence, const double q[4]) {
-    static const int NEXT[3] = {1, 2, 0}; /* (a + 1) % 3 without a division */
-    const int i = sequence->axes[sequence->kind == AK_SPACE_FIXED ? 2 : 0] - 1;
-    if (sequence->proper_euler) { /* 1 - 2 (q_a^2 + q_b^2), a, b the other two axes */
-        const double a = q[1 + NEXT[i]], b = q[1 + NEXT[NEXT[i]]];
-        return 1.0 - 2.0 * (a * a + b * b);
-    }
-    const int j = sequence->axes[1] - 1, k = 3 - i - j; /* 2 (q_i q_k -+ q0 q_j): - if k follows i */
-    const double sign = k == NEXT[i] ? -1.0 : 1.0;
-    return 2.0 * (q[1 + i] * q[1 + k] + sign * q[0] * q[1 + j]);
-}
+ * that). Along a path of rotation angle p from an attitude at singularity distance D, the
+ * distance stays at least D - p (it moves by at most the rotation angle) and each angle moves at
+ * a rate of at most |omega| / d (a row of W^-1 is a cross product of two unit axes over det W,
+ * |det W| = d): by at most the integral of dp / (D - p), ln(D / (D - p)), below 1 while
+ * p <= 0.6 D (ln 2.5 = 0.92), and d stays above 0.4 D. A step's rotation angle is at most
+ * pi |q_new - q_old| (2-norm; |q_new - q_old| = 2 sin(angle / 4)), taken with the 1-norm,
+ * which is larger and needs no square root. */
+static const double ANGLES_PATH_FRACTION = 0.6;
+static const double PI = 3.14159265358979323846;
 
 /* Before the state moves from v[q] to q_new: computes the angles at v[q] when a catch-up from
- * the last computed ones could differ after this step, and counts the step. */
+ * the last computed ones could differ after this step, and adds the step to the path. */
 static void step_angles(ak_model_data *data, const double q_new[4]) {
     double *v = data->values;
-    double moved2 = 0.0;
+    double moved = 0.0;
     for (int k = 0; k < 4; k++) {
-        moved2 += (q_new[k] - v[AP_VR_Q + k]) * (q_new[k] - v[AP_VR_Q + k]);
+        moved += fabs(q_new[k] - v[AP_VR_Q + k]);
     }
-    const double rotation = 4.0 * sqrt(moved2);
-    const double r = distance_entry(sequence_of(data), q_new);
-    const double d2 = 1.0 - r * r; /* below 0 only by rounding */
-    const double margin = sqrt(d2 > 0.0 ? d2 : 0.0) - rotation;
-    const double change = margin > 2.0 * AK_ATTITUDE_SINGULAR_DISTANCE ? rotation / margin
-                                                                       : INFINITY;
-    double bound = v[AP_VR_ANGLES_CHANGE_BOUND] + change;
-    if (v[AP_VR_ANGLES_AGE] >= 1.0 && !(bound <= ANGLES_CHANGE_LIMIT)) {
+    const double rotation = PI * moved;
+    double path = v[AP_VR_ANGLES_PATH] + rotation;
+    /* D above 5 singular distances: d stays above 2 of them, off the singular choice. */
+    const double distance = v[AP_VR_SINGULARITY_DISTANCE];
+    if (v[AP_VR_ANGLES_AGE] >= 1.0 &&
+        !(path <= ANGLES_PATH_FRACTION * distance &&
+          distance > 5.0 * AK_ATTITUDE_SINGULAR_DISTANCE)) {
         (void)evaluate(data); /* a unit q from the last step: cannot fail */
-        bound = change;
+        path = rotation;
     }
     v[AP_VR_ANGLES_AGE] += 1.0;
-    /* Finite, as every value of an FMU state: past the limit, the next step computes them. */
-    v[AP_VR_ANGLES_CHANGE_BOUND] = bound <= ANGLES_CHANGE_LIMIT ? bound : 2.0 * ANGLES_CHANGE_LIMIT;
+    v[AP_VR_ANGLES_PATH] = path; /* at most 2 pi per step: finite */
 }
 
 /* The lazy group, computed only when one of them is read: der(q) (fmi2GetDerivatives computes
@@ -227,7 +218,7 @@ static ak_eval_status initialize(ak_model_data *data) {
     ak_quat_to_matrix(&v[AP_VR_Q], R);
     ak_attitude_angles(sequence_of(data), R, NULL, &v[AP_VR_THETA], &distance);
     v[AP_VR_ANGLES_AGE] = 0.0;
-    v[AP_VR_ANGLES_CHANGE_BOUND] = 0.0;
+    v[AP_VR_ANGLES_PATH] = 0.0;
     return AK_EVAL_OK;
 }
 

@@ -64,7 +64,7 @@ const ak3_array AK3_ARRAYS[AK_MAX_VARIABLES] = {
     [57] = {"first_step_vector", 55, 3, 1, 3, 1},
     [58] = {"first_step_pending", 58, 1, 0, 1, 1},
     [59] = {"angles_age", 59, 1, 0, 1, 1},
-    [60] = {"angles_change_bound", 60, 1, 0, 1, 1},
+    [60] = {"angles_path", 60, 1, 0, 1, 1},
 };
 
 const int AK3_N_ARRAYS = 22;
