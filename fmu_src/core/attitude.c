@@ -268,6 +268,20 @@ static void singular_angles(bool space, const chain_axes *c, double R[3][3], dou
     theta[2] = unwrap(theta[2], previous[2]);
 }
 
+/* *set = unwrap(x, reference) for a principal angle x (in [-pi, pi], or NaN), and whether it is
+ * near: within 1/2 of reference, with |reference| < 1e9 so that the rounding of the unwrapping
+ * stays far below the margin of section 6's choice. When |gap| < 3, *set - reference is -gap
+ * (x - r = -(r - x); both exact when x = 0) and |reference| < pi + 1/2: the test is |gap| < 1/2. */
+static AK_CHAIN_INLINE bool unwrap_near(double x, double reference, double *set) {
+    const double gap = reference - x;
+    if (fabs(gap) < 3.0) {
+        *set = x + gap * 0.0;
+        return fabs(gap) < 0.5;
+    }
+    *set = x + TWO_PI * nearest_integer(gap / TWO_PI);
+    return fabs(*set - reference) < 0.5 && fabs(reference) < 1e9;
+}
+
 /* theta: the nearer to previous of the principal set (theta order) unwrapped, and the other
  * set unwrapped (section 6). Out of line: the usual step keeps the first. */
 #if defined(__GNUC__)
@@ -332,16 +346,13 @@ static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, 
         singular_angles(space, &c, R, phi[1], previous, theta);
         return true;
     }
-    const double set[3] = {unwrap(first, previous[0]), unwrap(phi[1], previous[1]),
-                           unwrap(last, previous[2])};
-    bool near = true;
-    for (int m = 0; m < 3; m++) {
-        near = near && fabs(set[m] - previous[m]) < 0.5 && fabs(previous[m]) < 1e9;
-    }
+    double set[3];
+    const bool near = unwrap_near(first, previous[0], &set[0])
+                      & unwrap_near(phi[1], previous[1], &set[1])
+                      & unwrap_near(last, previous[2], &set[2]);
     if (near) {
         /* The other set is pi away in theta1 and theta3 (section 5): at squared distance above
-         * 2 (pi - 1/2)^2 > 3/4, the most this one can have; sizes below 1e9 keep the rounding
-         * of the unwrapping far below that margin. */
+         * 2 (pi - 1/2)^2 > 3/4, the most this one can have. */
         for (int m = 0; m < 3; m++) {
             theta[m] = set[m];
         }
@@ -394,7 +405,7 @@ static const ak_attitude_angles_function CHAIN_FUNCTIONS[AK_SEQUENCE_COUNT] = {
 
 ak_attitude_angles_function ak_attitude_angles_of(const ak_sequence *sequence) {
     /* The table index from the contents (a copy of an entry works too): 12 per kind, 6 per
-     * family, 2 per first axis, then the second axis above or below the remaining one. */
+     * family, 2 per first axis, then whether the second axis is above the third. */
     const int a1 = sequence->axes[0], a2 = sequence->axes[1];
     const int index = 12 * (int)sequence->kind + 6 * (sequence->proper_euler != 0) + 2 * (a1 - 1)
                       + (2 * a2 + a1 > 6);
