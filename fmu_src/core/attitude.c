@@ -347,9 +347,10 @@ static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, 
         return true;
     }
     double set[3];
-    const bool near = unwrap_near(first, previous[0], &set[0])
-                      & unwrap_near(phi[1], previous[1], &set[1])
-                      & unwrap_near(last, previous[2], &set[2]);
+    /* All three, without a branch between them: nearer_set needs the whole unwrapped set. */
+    const int near = (int)unwrap_near(first, previous[0], &set[0])
+                     & (int)unwrap_near(phi[1], previous[1], &set[1])
+                     & (int)unwrap_near(last, previous[2], &set[2]);
     if (near) {
         /* The other set is pi away in theta1 and theta3 (section 5): at squared distance above
          * 2 (pi - 1/2)^2 > 3/4, the most this one can have. */
