@@ -162,10 +162,9 @@ bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double 
     return true;
 }
 
-/* Axes of the chain (0-based) and the parity e of section 5. */
+/* Axes of the chain (0-based, section 5), for the singular choice. */
 typedef struct {
     int i, j, k;
-    double e;
     bool proper;
 } chain_axes;
 
@@ -342,7 +341,7 @@ static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, 
         return false;
     }
     if (d < AK_ATTITUDE_SINGULAR_DISTANCE) {
-        const chain_axes c = {i, j, k, e, proper};
+        const chain_axes c = {i, j, k, proper};
         singular_angles(space, &c, R, phi[1], previous, theta);
         return true;
     }
