@@ -162,40 +162,11 @@ bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double 
     return true;
 }
 
-/* Axes of the chain (0-based) and the parity e of section 5. */
+/* Axes of the chain (0-based, section 5), for the singular choice. */
 typedef struct {
     int i, j, k;
-    double e;
     bool proper;
 } chain_axes;
-
-static chain_axes axes_of(const ak_sequence *sequence) {
-    chain_axes c;
-    const bool space = sequence->kind == AK_SPACE_FIXED;
-    c.i = sequence->axes[space ? 2 : 0] - 1;
-    c.j = sequence->axes[1] - 1;
-    c.k = 3 - c.i - c.j;
-    c.e = (c.j == (c.i + 1) % 3) ? 1.0 : -1.0;
-    c.proper = sequence->proper_euler != 0;
-    return c;
-}
-
-/* The principal chain angles (section 5) and the distance. */
-static void principal(const chain_axes *c, double R[3][3], double phi[3], double *distance) {
-    const int i = c->i, j = c->j, k = c->k;
-    const double e = c->e;
-    if (c->proper) {
-        *distance = sqrt(R[i][j] * R[i][j] + R[i][k] * R[i][k]);
-        phi[1] = ak_atan2(*distance, R[i][i]);
-        phi[0] = ak_atan2(R[j][i], -e * R[k][i]);
-        phi[2] = ak_atan2(R[i][j], e * R[i][k]);
-    } else {
-        *distance = sqrt(R[i][i] * R[i][i] + R[i][j] * R[i][j]);
-        phi[1] = ak_atan2(e * R[i][k], *distance);
-        phi[0] = ak_atan2(-e * R[j][k], R[k][k]);
-        phi[2] = ak_atan2(-e * R[i][j], R[i][i]);
-    }
-}
 
 /* The angle x of R_a(x) from its row (or column) `line` != a of a matrix M that has the factor
  * R_a(x) on its right (row) or left (column); see attitude.h, section 6. */
@@ -227,19 +198,31 @@ static void elementary(int a, double x, double E[3][3]) {
     E[after][after] = co;
 }
 
+/* Inlined into each sequence's function below, where the chain is constant and the indices,
+ * signs and the order of theta fold away. */
+#if defined(__GNUC__)
+#define AK_CHAIN_INLINE __attribute__((always_inline)) inline
+#else
+#define AK_CHAIN_INLINE inline
+#endif
+
+/* nearbyint(x) in the rounding to nearest (ties to even) that the core assumes, without a call:
+ * below 2^52, |x| + 2^52 rounds |x| to an integer and subtracting 2^52 is exact; the sign is
+ * nearbyint's (-0 for x in [-1/2, 0]); from 2^52 on, x (also inf, NaN) is its own. */
+static AK_CHAIN_INLINE double nearest_integer(double x) {
+    const double two52 = 4503599627370496.0;
+    const double a = fabs(x);
+    return a < two52 ? copysign((a + two52) - two52, x) : x;
+}
+
 /* x + 2 pi n nearest to reference. Within 3 of it, n is a zero of the sign of reference - x
  * (nearbyint of a quotient below 1/2 in size), so x + (reference - x) 0 is the same bits. */
-static double unwrap(double x, double reference) {
+static AK_CHAIN_INLINE double unwrap(double x, double reference) {
     const double gap = reference - x;
     if (fabs(gap) < 3.0) {
         return x + gap * 0.0;
     }
-    return x + TWO_PI * nearbyint(gap / TWO_PI);
-}
-
-/* theta_k of chain angle m (sequences.h): reversed for space-fixed sequences. */
-static int theta_index(const ak_sequence *sequence, int m) {
-    return sequence->kind == AK_SPACE_FIXED ? 2 - m : m;
+    return x + TWO_PI * nearest_integer(gap / TWO_PI);
 }
 
 static double squared_distance(const double a[3], const double b[3]) {
@@ -250,11 +233,13 @@ static double squared_distance(const double a[3], const double b[3]) {
     return sum;
 }
 
-/* The singular choice (section 6): theta1 held at previous[0], theta3 from the rest. */
-static void singular_angles(const ak_sequence *sequence, const chain_axes *c, double R[3][3],
-                            const double phi_principal[3], const double previous[3],
-                            double theta[3]) {
-    const bool space = sequence->kind == AK_SPACE_FIXED;
+/* The singular choice (section 6): theta1 held at previous[0], theta3 from the rest. Rare, so
+ * general over the chains and out of line. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void singular_angles(bool space, const chain_axes *c, double R[3][3], double phi2,
+                            const double previous[3], double theta[3]) {
     const int a1 = c->i, a2 = c->j, a3 = c->proper ? c->i : c->k;
     double E[3][3], M[3][3];
     const double held = previous[0];
@@ -276,58 +261,160 @@ static void singular_angles(const ak_sequence *sequence, const chain_axes *c, do
         theta[2] = angle_from_column(a1, a2, M);
     }
     theta[0] = held;
-    theta[1] = unwrap(phi_principal[1], previous[1]);
+    theta[1] = unwrap(phi2, previous[1]);
     /* theta2 at the singularity is +-pi/2 or 0/pi; the other set's theta2 (pi - x or -x) is the
      * same angle there up to 2 pi, so only theta2's unwrapping matters. */
     theta[2] = unwrap(theta[2], previous[2]);
 }
 
-bool ak_attitude_angles(const ak_sequence *sequence, double R[3][3],
-                        const double previous[3], double theta[3], double *distance) {
-    const chain_axes c = axes_of(sequence);
-    double phi[3];
-    principal(&c, R, phi, distance);
-    if (previous != NULL && *distance < AK_ATTITUDE_SINGULAR_DISTANCE) {
-        singular_angles(sequence, &c, R, phi, previous, theta);
+/* *set = unwrap(x, reference) for a principal angle x (in [-pi, pi], or NaN), and whether it is
+ * near: within 1/2 of reference, with |reference| < 1e9 so that the rounding of the unwrapping
+ * stays far below the margin of section 6's choice. When |gap| < 3, *set - reference is -gap
+ * (x - r = -(r - x); both exact when x = 0) and |reference| < pi + 1/2: the test is |gap| < 1/2. */
+static AK_CHAIN_INLINE bool unwrap_near(double x, double reference, double *set) {
+    const double gap = reference - x;
+    if (fabs(gap) < 3.0) {
+        *set = x + gap * 0.0;
+        return fabs(gap) < 0.5;
+    }
+    *set = x + TWO_PI * nearest_integer(gap / TWO_PI);
+    return fabs(*set - reference) < 0.5 && fabs(reference) < 1e9;
+}
+
+/* theta: the nearer to previous of the principal set (theta order) unwrapped, and the other
+ * set unwrapped (section 6). Out of line: the usual step keeps the first. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void nearer_set(bool proper, const double principal_set[3], const double unwrapped[3],
+                       const double previous[3], double theta[3]) {
+    const double other[3] = {
+        unwrap(principal_set[0] + PI, previous[0]),
+        unwrap(proper ? -principal_set[1] : PI - principal_set[1], previous[1]),
+        unwrap(principal_set[2] + PI, previous[2])};
+    const bool best = squared_distance(other, previous) < squared_distance(unwrapped, previous);
+    for (int m = 0; m < 3; m++) {
+        theta[m] = best ? other[m] : unwrapped[m];
+    }
+}
+
+/* e x for e = +-1: the same bits as the product for every x but a NaN (whose sign may differ). */
+static AK_CHAIN_INLINE double times_sign(double e, double x) {
+    return e > 0.0 ? x : -x;
+}
+
+/* Sections 5 and 6 for the chain i, j (0-based first and second chain axes), proper Euler or
+ * Tait-Bryan, theta in chain order (body-fixed) or reversed (space-fixed). Reads `previous` and
+ * writes theta last, so that the two may be the same array. */
+static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, double R[3][3],
+                                         const double previous[3], double theta[3],
+                                         double *distance) {
+    const int k = 3 - i - j;
+    const double e = (j == (i + 1) % 3) ? 1.0 : -1.0;
+    /* The principal chain angles (section 5): the arguments, then the three arctangents. */
+    double d, y[3], x[3];
+    if (proper) {
+        d = sqrt(R[i][j] * R[i][j] + R[i][k] * R[i][k]);
+        y[0] = R[j][i];
+        x[0] = times_sign(-e, R[k][i]);
+        y[1] = d;
+        x[1] = R[i][i];
+        y[2] = R[i][j];
+        x[2] = times_sign(e, R[i][k]);
+    } else {
+        d = sqrt(R[i][i] * R[i][i] + R[i][j] * R[i][j]);
+        y[0] = times_sign(-e, R[j][k]);
+        x[0] = R[k][k];
+        y[1] = times_sign(e, R[i][k]);
+        x[1] = d;
+        y[2] = times_sign(-e, R[i][j]);
+        x[2] = R[i][i];
+    }
+    *distance = d;
+    const double phi[3] = {ak_atan2(y[0], x[0]), ak_atan2(y[1], x[1]), ak_atan2(y[2], x[2])};
+    /* theta_k of chain angle m (sequences.h): reversed for space-fixed sequences. */
+    const double first = space ? phi[2] : phi[0], last = space ? phi[0] : phi[2];
+    if (previous == NULL) {
+        theta[0] = first;
+        theta[1] = phi[1];
+        theta[2] = last;
+        return false;
+    }
+    if (d < AK_ATTITUDE_SINGULAR_DISTANCE) {
+        const chain_axes c = {i, j, k, proper};
+        singular_angles(space, &c, R, phi[1], previous, theta);
         return true;
     }
-    double sets[2][3];
-    for (int m = 0; m < 3; m++) {
-        sets[0][theta_index(sequence, m)] = phi[m];
-    }
-    if (previous == NULL) {
-        for (int k = 0; k < 3; k++) {
-            theta[k] = sets[0][k];
-        }
-        return false;
-    }
-    const double principal_set[3] = {sets[0][0], sets[0][1], sets[0][2]};
-    bool near = true;
-    for (int k = 0; k < 3; k++) {
-        sets[0][k] = unwrap(sets[0][k], previous[k]);
-        near = near && fabs(sets[0][k] - previous[k]) < 0.5 && fabs(previous[k]) < 1e9;
-    }
+    double set[3];
+    /* All three, without a branch between them: nearer_set needs the whole unwrapped set. */
+    const int near = (int)unwrap_near(first, previous[0], &set[0])
+                     & (int)unwrap_near(phi[1], previous[1], &set[1])
+                     & (int)unwrap_near(last, previous[2], &set[2]);
     if (near) {
         /* The other set is pi away in theta1 and theta3 (section 5): at squared distance above
-         * 2 (pi - 1/2)^2 > 3/4, the most this one can have; sizes below 1e9 keep the rounding
-         * of the unwrapping far below that margin. */
-        for (int k = 0; k < 3; k++) {
-            theta[k] = sets[0][k];
+         * 2 (pi - 1/2)^2 > 3/4, the most this one can have. */
+        for (int m = 0; m < 3; m++) {
+            theta[m] = set[m];
         }
         return false;
     }
-    const double other_middle = c.proper ? -phi[1] : PI - phi[1];
-    sets[1][0] = principal_set[0] + PI;
-    sets[1][1] = other_middle;
-    sets[1][2] = principal_set[2] + PI;
-    for (int k = 0; k < 3; k++) { /* sets[0] is unwrapped above */
-        sets[1][k] = unwrap(sets[1][k], previous[k]);
-    }
-    const int best = squared_distance(sets[1], previous) < squared_distance(sets[0], previous);
-    for (int k = 0; k < 3; k++) {
-        theta[k] = sets[best][k];
-    }
+    const double principal_set[3] = {first, phi[1], last};
+    nearer_set(proper, principal_set, set, previous, theta);
     return false;
+}
+
+/* One function per sequence, in the order of AK_SEQUENCES: (first, second) chain axes, 1-based
+ * as in the name (the chain of a space-fixed sequence starts with its last axis). */
+#define CHAIN_FUNCTION(name, a1, a2, proper, space)                                             \
+    static bool angles_##name(double R[3][3], const double previous[3], double theta[3],        \
+                              double *distance) {                                               \
+        return chain_angles(a1 - 1, a2 - 1, proper, space, R, previous, theta, distance);       \
+    }
+CHAIN_FUNCTION(body123, 1, 2, false, false)
+CHAIN_FUNCTION(body132, 1, 3, false, false)
+CHAIN_FUNCTION(body213, 2, 1, false, false)
+CHAIN_FUNCTION(body231, 2, 3, false, false)
+CHAIN_FUNCTION(body312, 3, 1, false, false)
+CHAIN_FUNCTION(body321, 3, 2, false, false)
+CHAIN_FUNCTION(body121, 1, 2, true, false)
+CHAIN_FUNCTION(body131, 1, 3, true, false)
+CHAIN_FUNCTION(body212, 2, 1, true, false)
+CHAIN_FUNCTION(body232, 2, 3, true, false)
+CHAIN_FUNCTION(body313, 3, 1, true, false)
+CHAIN_FUNCTION(body323, 3, 2, true, false)
+CHAIN_FUNCTION(space123, 3, 2, false, true)
+CHAIN_FUNCTION(space132, 2, 3, false, true)
+CHAIN_FUNCTION(space213, 3, 1, false, true)
+CHAIN_FUNCTION(space231, 1, 3, false, true)
+CHAIN_FUNCTION(space312, 2, 1, false, true)
+CHAIN_FUNCTION(space321, 1, 2, false, true)
+CHAIN_FUNCTION(space121, 1, 2, true, true)
+CHAIN_FUNCTION(space131, 1, 3, true, true)
+CHAIN_FUNCTION(space212, 2, 1, true, true)
+CHAIN_FUNCTION(space232, 2, 3, true, true)
+CHAIN_FUNCTION(space313, 3, 1, true, true)
+CHAIN_FUNCTION(space323, 3, 2, true, true)
+#undef CHAIN_FUNCTION
+
+static const ak_attitude_angles_function CHAIN_FUNCTIONS[AK_SEQUENCE_COUNT] = {
+    angles_body123,  angles_body132,  angles_body213,  angles_body231,  angles_body312,
+    angles_body321,  angles_body121,  angles_body131,  angles_body212,  angles_body232,
+    angles_body313,  angles_body323,  angles_space123, angles_space132, angles_space213,
+    angles_space231, angles_space312, angles_space321, angles_space121, angles_space131,
+    angles_space212, angles_space232, angles_space313, angles_space323};
+
+ak_attitude_angles_function ak_attitude_angles_of(const ak_sequence *sequence) {
+    /* The table index from the contents (a copy of an entry works too): 12 per kind, 6 per
+     * family, 2 per first axis, then whether the second axis is above the third. */
+    const int a1 = sequence->axes[0], a2 = sequence->axes[1];
+    const int index = 12 * (int)sequence->kind + 6 * (sequence->proper_euler != 0) + 2 * (a1 - 1)
+                      + (2 * a2 + a1 > 6);
+    return CHAIN_FUNCTIONS[index];
+}
+
+bool ak_attitude_angles(const ak_sequence *sequence, double R[3][3],
+                        const double previous[3], double theta[3], double *distance) {
+    return ak_attitude_angles_of(sequence)(R, previous, theta, distance);
 }
 
 void ak_attitude_angle_rates(const ak_sequence *sequence, ak_frame frame, const double theta[3],

@@ -146,6 +146,14 @@ bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double 
 bool ak_attitude_angles(const ak_sequence *sequence, double R[3][3],
                         const double previous[3], double theta[3], double *distance);
 
+/* ak_attitude_angles for one sequence, without the sequence: the same results. */
+typedef bool (*ak_attitude_angles_function)(double R[3][3], const double previous[3],
+                                            double theta[3], double *distance);
+
+/* The function of `sequence` (an entry of AK_SEQUENCES or a copy of one), for a caller that
+ * extracts the angles of one sequence many times. */
+ak_attitude_angles_function ak_attitude_angles_of(const ak_sequence *sequence);
+
 /* theta_dot for the angles theta of the attitude R and omega in `frame` components (section 7).
  * theta comes from ak_attitude_angles; singular is its result. */
 void ak_attitude_angle_rates(const ak_sequence *sequence, ak_frame frame, const double theta[3],
