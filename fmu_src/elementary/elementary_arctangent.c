@@ -235,7 +235,8 @@ void ak_atan2_three(const double y[3], const double x[3], double out[3]) {
         out[2] = third;
         return;
     }
-    const atan2_pair pair = atan2_usual_pair((atan2_pair){y0, y1}, (atan2_pair){x0, x1});
+    const atan2_pair y_pair = {y0, y1}, x_pair = {x0, x1};
+    const atan2_pair pair = atan2_usual_pair(y_pair, x_pair);
     out[0] = pair[0];
     out[1] = pair[1];
     out[2] = third;
