@@ -13,7 +13,9 @@
 #   5. AttitudePropagator (bench/bench_attitude.c): set omega + doStep + get q (and theta), FMI 2
 #      and FMI 3, vs. the bare quaternion update (and the update + angle extraction), frozen
 #      copies in bench/attitude_anchor.c, over the largest step count of --steps;
-#   6. the project's sincos beside the C library's sin and cos (bench/bench_sincos.c).
+#   6. the project's sincos beside the C library's sin and cos (bench/bench_sincos.c), and three
+#      atan2 at once (ak_atan2_three) beside three ak_atan2 and three C library atan2
+#      (bench/bench_atan2.c).
 # The anchors every ratio is to do not move with the FMU (issue 24): the hand-written 1-2-3
 # formula (tests/c/kinematics_123.c) and the bare quaternion update; the general core is a figure
 # of its own. Unless --quick or --no-previous, the previous release's binaries
@@ -226,4 +228,7 @@ sequence_callgrind_table() {
   echo
   # The project's sincos beside the C library's (bench/bench_sincos.c).
   build/bench/bench_sincos --calls "$(awk -v c="$calls" 'BEGIN { print (c < 4096 ? 4096 : 40 * c) }')" --repeats "$repeats"
+  echo
+  # Three atan2 at once beside three ak_atan2 and the C library's (bench/bench_atan2.c).
+  build/bench/bench_atan2 --calls "$(awk -v c="$calls" 'BEGIN { print (c < 4096 ? 4096 : 2 * c) }')" --repeats "$repeats"
 } | tee build/last-run.md

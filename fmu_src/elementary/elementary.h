@@ -25,6 +25,9 @@
 /* Special values as C99 Annex F states for sin, cos, atan, atan2, asin, acos. */
 double ak_atan(double x);
 double ak_atan2(double y, double x);
+/* out[k] = ak_atan2(y[k], x[k]) for k = 0, 1, 2, bit for bit, the three side by side (the angles
+ * of a rotation sequence); out may alias y or x. */
+void ak_atan2_three(const double y[3], const double x[3], double out[3]);
 double ak_asin(double x);
 double ak_acos(double x);
 

@@ -82,6 +82,129 @@ static void check_sincos_three(void) {
     ak_check(usual > n / 2, "the usual path taken for most angles (%d of %d)", usual, n);
 }
 
+/* ak_atan2_three against ak_atan2, bit for bit (NaN payloads too), with out aliasing y. */
+static void check_atan2_three_at(const double y[3], const double x[3]) {
+    double out[3] = {7.0, 7.0, 7.0}, in_place[3] = {y[0], y[1], y[2]};
+    ak_atan2_three(y, x, out);
+    ak_atan2_three(in_place, x, in_place);
+    for (int k = 0; k < 3; k++) {
+        const uint64_t expected = bits_of(ak_atan2(y[k], x[k]));
+        ak_check(bits_of(out[k]) == expected && bits_of(in_place[k]) == expected,
+                 "atan2_three slot %d (%a, %a): got %a (in place %a), ak_atan2 %a", k, y[k], x[k],
+                 out[k], in_place[k], ak_atan2(y[k], x[k]));
+    }
+}
+
+static uint64_t next_random(uint64_t *state) {
+    *state = *state * 6364136223846793005ull + 1442695040888963407ull;
+    uint64_t z = *state; /* the LCG's low bits are weak: mix them (splitmix64's finalizer) */
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+/* Uniform in [-1, 1). */
+static double random_unit(uint64_t *state) {
+    return 2.0 * ((double)(next_random(state) >> 11) / 9007199254740992.0) - 1.0;
+}
+
+/* A double from random bits: every sign, exponent, NaN and infinity. */
+static double random_bits(uint64_t *state) {
+    const uint64_t b = next_random(state);
+    double x;
+    memcpy(&x, &b, sizeof x);
+    return x;
+}
+
+/* Near the axes and the diagonals, and at the ratios where ak_atan2 changes path: |y|/|x| about
+ * 2^-k (k up to 64, past the usual 2^-60), about 1 (the swap of y and x), and about j/32 (the
+ * kernel's intervals); magnitudes near the usual path's ends 2^+-600 now and then. */
+static void random_edge_pair(uint64_t *state, double *y, double *x) {
+    const uint64_t b = next_random(state);
+    const double size = ((b >> 8) % 8 == 0) ? ldexp(1.0, 595 + (int)((b >> 11) % 11))
+                                            : ((b >> 8) % 8 == 1) ? ldexp(1.0, -606 + (int)((b >> 11) % 11))
+                                                                  : 1.0 + 0.5 * random_unit(state);
+    double ratio;
+    switch (b % 4) {
+    case 0: /* near an axis */
+        ratio = ldexp(1.0 + 0.5 * random_unit(state), -(int)((b >> 16) % 65));
+        break;
+    case 1: /* near a diagonal: a few ulps from 1 */
+        ratio = 1.0 + (double)((int)((b >> 16) % 9) - 4) * 0x1p-52;
+        break;
+    case 2: /* near an interval edge j/32 of the kernel */
+        ratio = (double)((b >> 16) % 33) / 32.0 + (double)((int)((b >> 24) % 9) - 4) * 0x1p-52;
+        break;
+    default: /* near a diagonal, relatively */
+        ratio = 1.0 + ldexp(random_unit(state), -(int)((b >> 16) % 53));
+        break;
+    }
+    const double small = size * ratio, large = size;
+    const int flip = (int)((b >> 40) & 1), sy = (int)((b >> 41) & 1), sx = (int)((b >> 42) & 1);
+    *y = (flip ? large : small) * (sy ? -1.0 : 1.0);
+    *x = (flip ? small : large) * (sx ? -1.0 : 1.0);
+}
+
+/* Every special pair (signed zeros, infinities, NaN, subnormals, extremes, the ends of the usual
+ * path) in every slot next to usual pairs and next to each other, and 1.2 million random triples
+ * of four kinds. */
+static void check_atan2_three(void) {
+    const double special[] = {0.0, -0.0, 1.0, -1.0, INFINITY, -INFINITY, NAN, -NAN, 0x1p-1074,
+                              -0x1p-1074, DBL_MIN, -DBL_MIN, 0x1.fffffffffffffp-1023, DBL_MAX,
+                              -DBL_MAX, 0x1p-600, 0x1.fffffffffffffp-601, 0x1.fffffffffffffp+600,
+                              -0x1p601, 0x1p-60, -0x1p-61, 0x1p60, 0x1p61, 3.0};
+    const int n_special = (int)(sizeof special / sizeof special[0]);
+    const double usual_y[3] = {0.3, -2.5, 0.75}, usual_x[3] = {-0.9, 1.5, 0.75};
+    for (int a = 0; a < n_special; a++) {
+        for (int b = 0; b < n_special; b++) {
+            for (int slot = 0; slot < 3; slot++) {
+                double y[3] = {usual_y[0], usual_y[1], usual_y[2]};
+                double x[3] = {usual_x[0], usual_x[1], usual_x[2]};
+                y[slot] = special[a];
+                x[slot] = special[b];
+                check_atan2_three_at(y, x);
+            }
+            /* The same pair in all three slots, and next to two other special pairs. */
+            const double y3[3] = {special[a], special[a], special[(a + b) % n_special]};
+            const double x3[3] = {special[b], special[(a * b + 1) % n_special], special[b]};
+            check_atan2_three_at(y3, x3);
+        }
+    }
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (int n = 0; n < 1200000; n++) {
+        double y[3], x[3];
+        for (int k = 0; k < 3; k++) {
+            switch (n % 4) {
+            case 0:
+                y[k] = random_bits(&state);
+                x[k] = random_bits(&state);
+                break;
+            case 1:
+                y[k] = random_unit(&state);
+                x[k] = random_unit(&state);
+                break;
+            case 2:
+                random_edge_pair(&state, &y[k], &x[k]);
+                break;
+            default:
+                y[k] = random_unit(&state);
+                x[k] = random_unit(&state);
+                break;
+            }
+        }
+        if (n % 4 == 3) { /* one component special, the other two usual */
+            const uint64_t b = next_random(&state);
+            const int slot = (int)(b % 3);
+            if ((b >> 8) & 1) {
+                y[slot] = special[(b >> 16) % (uint64_t)n_special];
+            } else {
+                x[slot] = special[(b >> 16) % (uint64_t)n_special];
+            }
+        }
+        check_atan2_three_at(y, x);
+    }
+}
+
 static double sin_of(double x) { return ak_sin(x); }
 static double cos_of(double x) { return ak_cos(x); }
 
@@ -154,6 +277,8 @@ int main(void) {
     }
     /* atan2(y, x) = atan(y/x) for x > 0 when y/x is exact. */
     check_same2(ak_atan2(3.0, 6.0), ak_atan(0.5), "atan2", 3.0, 6.0);
+
+    check_atan2_three();
 
     /* asin and acos (F.9.1.1, F.9.1.2) */
     check_same(ak_asin(0.0), 0.0, "asin", 0.0);
