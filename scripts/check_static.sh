@@ -37,7 +37,7 @@ core_exemptions() {
   echo '  <suppress><id>unusedFunction</id><symbolName>ak_general_all_outputs</symbolName></suppress>'
   echo '  <!-- Reason: the elementary functions are a complete set (fmu_src/elementary/); the models do not'
   echo '       call every one, the accuracy test and the C tests do (tests/c is not in this run). -->'
-  for symbol in ak_atan ak_asin ak_acos ak_atan2_three; do
+  for symbol in ak_atan ak_asin ak_acos; do
     echo "  <suppress><id>unusedFunction</id><symbolName>$symbol</symbolName></suppress>"
   done
 }

@@ -331,7 +331,8 @@ static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, 
         x[2] = R[i][i];
     }
     *distance = d;
-    const double phi[3] = {ak_atan2(y[0], x[0]), ak_atan2(y[1], x[1]), ak_atan2(y[2], x[2])};
+    double phi[3];
+    ak_atan2_three(y, x, phi); /* the bits of three ak_atan2, side by side */
     /* theta_k of chain angle m (sequences.h): reversed for space-fixed sequences. */
     const double first = space ? phi[2] : phi[0], last = space ? phi[0] : phi[2];
     if (previous == NULL) {
