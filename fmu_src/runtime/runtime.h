@@ -124,25 +124,20 @@ static AK_ALWAYS_INLINE bool ak_scalar_call_valid(const ak_instance *instance,
  * four vectors) with the count a constant: a few moves instead of a call of memcpy, element by
  * element (gcc made a memcpy of 12 doubles a slow rep movs). */
 static AK_ALWAYS_INLINE void ak_copy_values(double *to, const double *from, size_t n) {
-    switch (n) {
-    case 3:
-        for (size_t k = 0; k < 3; k++) {
-            to[k] = from[k];
-        }
-        return;
-    case 4:
-        for (size_t k = 0; k < 4; k++) {
-            to[k] = from[k];
-        }
-        return;
-    case 12:
+    if (n == 12) { /* the most usual first: one comparison on its path */
         for (size_t k = 0; k < 12; k++) {
             to[k] = from[k];
         }
-        return;
-    default:
+    } else if (n == 4) {
+        for (size_t k = 0; k < 4; k++) {
+            to[k] = from[k];
+        }
+    } else if (n == 3) {
+        for (size_t k = 0; k < 3; k++) {
+            to[k] = from[k];
+        }
+    } else {
         memcpy(to, from, n * sizeof to[0]);
-        return;
     }
 }
 /* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
