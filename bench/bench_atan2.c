@@ -69,13 +69,7 @@ static double time_way(int way, const triples *in, long rounds, int chained) {
 int main(int argc, char **argv) {
     double calls = 1e7;
     int repeats = 5;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (strcmp(argv[i], "--calls") == 0) {
-            calls = atof(argv[i + 1]);
-        } else if (strcmp(argv[i], "--repeats") == 0) {
-            repeats = atoi(argv[i + 1]);
-        }
-    }
+    ak_bench_calls_and_repeats(argc, argv, &calls, &repeats);
     if (repeats < 1 || repeats > MAX_REPEATS || !(calls >= N_TRIPLES)) {
         fprintf(stderr, "usage: bench_atan2 [--calls N >= %d] [--repeats 1..%d] (N triples)\n",
                 N_TRIPLES, MAX_REPEATS);

@@ -6,12 +6,12 @@
  * It fails (exit 1) unless ak_sincos is within 2 ulp of the C library's on every argument (each
  * is within 1 ulp of sin and cos). */
 #define _POSIX_C_SOURCE 200809L
+#include "bench_timing.h"
 #include "elementary.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include <time.h>
 
 enum { N_ARGS = 4096, MAX_REPEATS = 99 };
@@ -70,13 +70,7 @@ static double ulps(double a, double b) {
 int main(int argc, char **argv) {
     double calls = 4e7;
     int repeats = 5;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (strcmp(argv[i], "--calls") == 0) {
-            calls = atof(argv[i + 1]);
-        } else if (strcmp(argv[i], "--repeats") == 0) {
-            repeats = atoi(argv[i + 1]);
-        }
-    }
+    ak_bench_calls_and_repeats(argc, argv, &calls, &repeats);
     if (repeats < 1 || repeats > MAX_REPEATS || !(calls >= N_ARGS)) {
         fprintf(stderr, "usage: bench_sincos [--calls N >= %d] [--repeats 1..%d]\n", N_ARGS,
                 MAX_REPEATS);
