@@ -65,7 +65,7 @@ static AK_ALWAYS_INLINE bool same_value_references(const unsigned int a[], const
     return true;
 }
 
-/* ak_store_if_finite with the count a constant for a vector or a quaternion, as copy_values. */
+/* ak_store_if_finite with the count a constant for a vector or a quaternion (as ak_copy_values). */
 static AK_ALWAYS_INLINE ak_store_result store_values(double *target, const double value[],
                                                      size_t n) {
     switch (n) {
@@ -394,12 +394,7 @@ AK_NOINLINE static ak_status set_reals_checked(ak_instance *instance, const ak_f
     /* Untraced, and no input derivative to forget: a usual set stores values, nothing more. */
     const bool trace = ak_log_on(instance, AK_LOG_CALLS);
     const bool plain_store = !trace && !instance->data.any_input_derivative;
-    /* The usual set of an importer: the first nvr inputs in value-reference order. */
-    if (plain_store && nvr > 0 && nvr <= (size_t)AK_MODEL.n_inputs &&
-        memcmp(vr, EVERY_VALUE_REFERENCE, nvr * sizeof vr[0]) == 0 &&
-        ak_store_inputs(instance, 0, value, nvr, (size_t)AK_MODEL.n_inputs)) {
-        return AK_STATUS_OK;
-    }
+    /* (A run of finite inputs, untraced, took ak_set_reals' usual path: not here.) */
     const bool usual = only_finite_inputs(vr, nvr, value);
     if (!usual && !check_each_real(instance, function, vr, nvr, value)) {
         return AK_STATUS_ERROR;
@@ -425,17 +420,9 @@ AK_NOINLINE static ak_status set_reals_checked(ak_instance *instance, const ak_f
     return AK_STATUS_OK;
 }
 
-/* True when vr is a run first, first + 1, .. of inputs (value references 0 .. n_inputs - 1),
- * compared element by element: for a run of a few, cheaper than a call of memcmp. */
+/* True when vr is a run first, first + 1, .. of inputs (value references 0 .. n_inputs - 1). */
 static AK_ALWAYS_INLINE bool inputs_run(const unsigned int vr[], size_t nvr, size_t n_inputs) {
-    if (nvr == 0 || nvr > n_inputs || vr[0] > n_inputs - nvr) {
-        return false;
-    }
-    bool run = true;
-    for (size_t i = 1; i < nvr; i++) {
-        run &= vr[i] == vr[0] + i;
-    }
-    return run;
+    return nvr > 0 && nvr <= n_inputs && vr[0] <= n_inputs - nvr && consecutive(vr, nvr);
 }
 
 ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
