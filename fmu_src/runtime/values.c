@@ -322,11 +322,11 @@ ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
 
 bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
                      size_t usual_n) {
-    /* The caller's usual count as a constant: the compiler unrolls the check and the copy
-     * instead of calling memcpy. */
+    /* The caller's usual count, and a vector's or a quaternion's, as constants: the compiler
+     * unrolls the check and the copy instead of calling memcpy. */
     double *target = &instance->data.values[first];
     const ak_store_result stored = n == usual_n ? ak_store_if_finite(target, value, usual_n)
-                                                : ak_store_if_finite(target, value, n);
+                                                : store_values(target, value, n);
     if (stored == AK_STORE_CHANGED) {
         ak_instance_inputs_changed(instance);
     }
@@ -434,16 +434,9 @@ ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
     if (ak_call_passes(instance, call) && !instance->data.any_input_derivative && vr != NULL &&
         value != NULL &&
         (nvr == n_inputs ? memcmp(vr, EVERY_VALUE_REFERENCE, n_inputs * sizeof vr[0]) == 0
-                         : inputs_run(vr, nvr, n_inputs))) {
-        const ak_store_result stored =
-            nvr == n_inputs ? ak_store_if_finite(instance->data.values, value, n_inputs)
-                            : store_values(&instance->data.values[vr[0]], value, nvr);
-        if (stored == AK_STORE_CHANGED) {
-            ak_instance_inputs_changed(instance);
-        }
-        if (stored != AK_STORE_REFUSED) {
-            return AK_STATUS_OK;
-        }
+                         : inputs_run(vr, nvr, n_inputs)) &&
+        ak_store_inputs(instance, vr[0], value, nvr, n_inputs)) {
+        return AK_STATUS_OK;
     }
     return set_reals_checked(instance, call, vr, nvr, value);
 }
