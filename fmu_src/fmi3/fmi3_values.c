@@ -259,14 +259,8 @@ static inline bool untraced_call_allowed(const ak_instance *instance, ak3_functi
 /* True when vr, nvr, nValues are those of the kept usual get. */
 static bool same_get(const ak3_kept_get *kept, const fmi3ValueReference vr[], size_t nvr,
                      size_t n_values) {
-    if (nvr != kept->nvr || n_values != kept->n_values) {
-        return false;
-    }
-    unsigned int differ = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        differ |= vr[i] ^ kept->vr[i];
-    }
-    return differ == 0;
+    return nvr == kept->nvr && n_values == kept->n_values &&
+           ak_same_value_references(vr, kept->vr, nvr);
 }
 
 /* True for the usual get of every communication point: output arrays that follow each other,

@@ -140,6 +140,20 @@ static AK_ALWAYS_INLINE void ak_copy_values(double *to, const double *from, size
         memcpy(to, from, n * sizeof to[0]);
     }
 }
+/* Whether a and b hold the same n value references (a kept get asked again): a few compared
+ * element by element (a call of memcmp costs more), more with memcmp. */
+static AK_ALWAYS_INLINE bool ak_same_value_references(const unsigned int a[],
+                                                      const unsigned int b[], size_t n) {
+    if (n > 16) {
+        return memcmp(a, b, n * sizeof a[0]) == 0;
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (a[i] != b[i]) {
+            return false;
+        }
+    }
+    return true;
+}
 /* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
  * its arrays first (FMI 2; the FMI 3 layer expands
  * its arrays into them where it has no faster path). */

@@ -50,21 +50,6 @@ static AK_ALWAYS_INLINE bool consecutive(const unsigned int vr[], size_t nvr) {
     return run;
 }
 
-/* Whether a and b hold the same n value references: a few compared element by element (a call
- * of memcmp costs more), more with memcmp. */
-static AK_ALWAYS_INLINE bool same_value_references(const unsigned int a[], const unsigned int b[],
-                                                   size_t n) {
-    if (n > 2 * SHORT_RUN) {
-        return memcmp(a, b, n * sizeof a[0]) == 0;
-    }
-    for (size_t i = 0; i < n; i++) {
-        if (a[i] != b[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-
 /* ak_store_if_finite with the count a constant for a vector or a quaternion (as ak_copy_values). */
 static AK_ALWAYS_INLINE ak_store_result store_values(double *target, const double value[],
                                                      size_t n) {
@@ -308,7 +293,7 @@ ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
         if (!consecutive(vr, nvr)) {
             const ak_get_runs *last = &instance->last_runs;
             if (nvr > 0 && nvr == last->nvr && last->n_runs > 0 &&
-                same_value_references(vr, last->vr, nvr)) {
+                ak_same_value_references(vr, last->vr, nvr)) {
                 status = update_for(instance, last->roles, vr, nvr);
                 for (size_t r = 0, i = 0; r < last->n_runs; i += last->lengths[r++]) {
                     ak_copy_values(&value[i], &instance->data.values[vr[i]], last->lengths[r]);
