@@ -2,7 +2,8 @@
  * for the sanitizer, valgrind and soak runs (scripts/check_sanitizers.sh, scripts/soak.sh):
  *
  *   fmi3_abuse calls               every FMI 3 function with a NULL instance, and with a live
- *                                  instance and NULL pointers or absurd sizes: no crash, fmi3Error
+ *                                  instance and NULL pointers or absurd sizes: no crash, fmi3Error,
+ *                                  the live instance bit for bit as before
  *   fmi3_abuse instances N T STEPS N instances over T threads, each stepping with its own
  *                                  sequence and inputs, FMU states got, serialized, restored; each
  *                                  one's output bits equal a lone rerun's
@@ -18,6 +19,7 @@
 #include <string.h>
 
 #include "fmi3Functions.h"
+#include "fmi3_layer.h"
 #include "model.h"
 #include "test_check.h"
 
@@ -222,10 +224,13 @@ static void null_instance(void) {
     ak_check(fmi3InstantiateModelExchange("x", NULL, NULL, 0, 0, NULL, NULL) == NULL, "no token");
 }
 
-/* A live instance and NULL pointers or absurd counts: fmi3Error and one logged error each. */
+/* A live instance and NULL pointers or absurd counts: fmi3Error and one logged error each, and
+ * the instance bit for bit as before. */
 static void null_pointers(void) {
     log_counts counts = {0, 0};
     fmi3Instance instance = new_instance(&counts);
+    fmi3_instance before;
+    memcpy(&before, instance, sizeof before);
     fmi3ValueReference vr[2] = {0, 3};
     double d[9] = {0};
     size_t n;
@@ -246,6 +251,7 @@ static void null_pointers(void) {
     ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, NAN, fmi3False, 0) == fmi3Error,
              "nan");
     ak_check(counts.errors == 12, "%d errors logged, expected 12", counts.errors);
+    ak_check(memcmp(&before, instance, sizeof before) == 0, "a refused call changed the instance");
     fmi3FreeInstance(instance);
 }
 

@@ -2,12 +2,16 @@
  * program of FMI 3 calls on one co-simulation or model-exchange instance, each call's arguments
  * taken from the following bytes (value references, counts, doubles, integers, states). The
  * buffers the FMU may write are always as long as the count passed with them, so any read or
- * write out of bounds, crash or undefined behaviour is the FMU's. */
+ * write out of bounds, crash or undefined behaviour is the FMU's. A call answered with fmi3Error
+ * must leave the instance bit for bit as it was (the harness links the FMU's sources and
+ * compares the whole instance); one that does aborts the run. */
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "fmi3Functions.h"
+#include "fmi3_layer.h"
 #include "model.h"
 
 typedef struct {
@@ -38,6 +42,17 @@ static void ignore_log(fmi3InstanceEnvironment e, fmi3Status s, fmi3String c, fm
 }
 
 enum { MAX_N = 96 };
+
+/* A call answered with fmi3Error changed the instance: the oracle's failure, a crash for
+ * libFuzzer. `before` is the instance copied just before the call. */
+static void check_refused(fmi3Instance instance, fmi3_instance *before, fmi3Status status,
+                          int call) {
+    if (status == fmi3Error && memcmp(before, instance, sizeof *before) != 0) {
+        fprintf(stderr, "call %d answered fmi3Error and changed the instance\n", call);
+        abort();
+    }
+    memcpy(before, instance, sizeof *before); /* for a second call of the same case */
+}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -78,48 +93,61 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         double t;
         size_t count;
         fmi3FMUState *state = &states[byte(&r) & 1];
-        switch (byte(&r) % 22) {
-        case 0: fmi3SetFloat64(instance, vr, nvr, values, n); break;
-        case 1: fmi3GetFloat64(instance, vr, nvr, values, n); break;
-        case 2: fmi3SetInt64(instance, vr, nvr, ints, n); break;
-        case 3: fmi3GetInt64(instance, vr, nvr, ints, n); break;
-        case 4: fmi3EnterInitializationMode(instance, byte(&r) & 1, number(&r), number(&r), byte(&r) & 1, number(&r)); break;
-        case 5: fmi3ExitInitializationMode(instance); break;
-        case 6: fmi3DoStep(instance, number(&r), number(&r), 1, &b[0], &b[1], &b[2], &t); break;
-        case 7: fmi3GetOutputDerivatives(instance, vr, nvr, orders, values, n); break;
-        case 8: fmi3GetDirectionalDerivative(instance, vr, nvr, &vr[nvr / 2], nvr - nvr / 2, values, n, other, byte(&r) % MAX_N); break;
-        case 9: fmi3GetAdjointDerivative(instance, vr, nvr, &vr[nvr / 2], nvr - nvr / 2, values, n, other, byte(&r) % MAX_N); break;
-        case 10: fmi3GetFMUState(instance, state); break;
-        case 11: fmi3SetFMUState(instance, *state); break;
-        case 12: fmi3FreeFMUState(instance, state); break;
+        fmi3_instance before;
+        memcpy(&before, instance, sizeof before);
+        fmi3Status status = fmi3OK;
+        const int call = byte(&r) % 22;
+        switch (call) {
+        case 0: status = fmi3SetFloat64(instance, vr, nvr, values, n); break;
+        case 1: status = fmi3GetFloat64(instance, vr, nvr, values, n); break;
+        case 2: status = fmi3SetInt64(instance, vr, nvr, ints, n); break;
+        case 3: status = fmi3GetInt64(instance, vr, nvr, ints, n); break;
+        case 4: status = fmi3EnterInitializationMode(instance, byte(&r) & 1, number(&r), number(&r), byte(&r) & 1, number(&r)); break;
+        case 5: status = fmi3ExitInitializationMode(instance); break;
+        case 6: status = fmi3DoStep(instance, number(&r), number(&r), 1, &b[0], &b[1], &b[2], &t); break;
+        case 7: status = fmi3GetOutputDerivatives(instance, vr, nvr, orders, values, n); break;
+        case 8: status = fmi3GetDirectionalDerivative(instance, vr, nvr, &vr[nvr / 2], nvr - nvr / 2, values, n, other, byte(&r) % MAX_N); break;
+        case 9: status = fmi3GetAdjointDerivative(instance, vr, nvr, &vr[nvr / 2], nvr - nvr / 2, values, n, other, byte(&r) % MAX_N); break;
+        case 10: status = fmi3GetFMUState(instance, state); break;
+        case 11: status = fmi3SetFMUState(instance, *state); break;
+        case 12: status = fmi3FreeFMUState(instance, state); break;
         case 13: {
             unsigned char bytes[800];
             if (*state != NULL && fmi3SerializedFMUStateSize(instance, *state, &count) == fmi3OK &&
                 count <= sizeof bytes && fmi3SerializeFMUState(instance, *state, bytes, count) == fmi3OK) {
                 bytes[byte(&r) % count] ^= byte(&r); /* damaged, or not when 0 */
                 fmi3FMUState copy = NULL;
-                if (fmi3DeserializeFMUState(instance, bytes, count - (byte(&r) & 1), &copy) == fmi3OK) {
-                    fmi3SetFMUState(instance, copy);
-                    fmi3FreeFMUState(instance, &copy);
+                status = fmi3DeserializeFMUState(instance, bytes, count - (byte(&r) & 1), &copy);
+                if (status == fmi3OK) {
+                    status = fmi3SetFMUState(instance, copy);
+                    check_refused(instance, &before, status, call);
+                    status = fmi3FreeFMUState(instance, &copy);
                 }
             }
             break;
         }
-        case 14: fmi3Terminate(instance); break;
-        case 15: fmi3Reset(instance); break;
-        case 16: fmi3EnterContinuousTimeMode(instance); fmi3SetTime(instance, number(&r)); break;
-        case 17: fmi3UpdateDiscreteStates(instance, &b[0], &b[1], &b[2], &b[3], &b[4], &t); break;
-        case 18: fmi3GetNumberOfVariableDependencies(instance, vr[0], &count); break;
+        case 14: status = fmi3Terminate(instance); break;
+        case 15: status = fmi3Reset(instance); break;
+        case 16:
+            check_refused(instance, &before, fmi3EnterContinuousTimeMode(instance), call);
+            status = fmi3SetTime(instance, number(&r));
+            break;
+        case 17: status = fmi3UpdateDiscreteStates(instance, &b[0], &b[1], &b[2], &b[3], &b[4], &t); break;
+        case 18: status = fmi3GetNumberOfVariableDependencies(instance, vr[0], &count); break;
         case 19: /* continuous states (AttitudePropagator has 4): counts 0 .. 5 */
-            fmi3SetContinuousStates(instance, values, n % 6);
-            fmi3GetContinuousStateDerivatives(instance, other, n % 6);
+            check_refused(instance, &before, fmi3SetContinuousStates(instance, values, n % 6), call);
+            status = fmi3GetContinuousStateDerivatives(instance, other, n % 6);
             break;
         case 20:
-            fmi3GetContinuousStates(instance, values, n % 6);
-            fmi3GetNominalsOfContinuousStates(instance, other, n % 6);
+            check_refused(instance, &before, fmi3GetContinuousStates(instance, values, n % 6), call);
+            status = fmi3GetNominalsOfContinuousStates(instance, other, n % 6);
             break;
-        default: fmi3EnterEventMode(instance); fmi3CompletedIntegratorStep(instance, 1, &b[0], &b[1]); break;
+        default:
+            check_refused(instance, &before, fmi3EnterEventMode(instance), call);
+            status = fmi3CompletedIntegratorStep(instance, 1, &b[0], &b[1]);
+            break;
         }
+        check_refused(instance, &before, status, call);
     }
     fmi3FreeInstance(instance); /* frees the states left */
     return 0;

@@ -324,6 +324,31 @@ class Instance:
             assert self.set(inputs) == 0
         self.fmu.exitInitializationMode()
 
+    def snapshot(self):
+        """What a refused call must leave as it was: the serialized FMU state and the bits of
+        every variable read through fmi2GetReal and fmi2GetInteger, with their statuses (an
+        illegal get in the instance's state answers fmi2Error: its message is not kept)."""
+        n_messages = len(self.messages)
+        variables = self.model_description.modelVariables
+        reals = [v.valueReference for v in variables if v.type == "Real"]
+        integers = [v.valueReference for v in variables if v.type != "Real"]
+        real_values = (ctypes.c_double * len(reals))()
+        real_status = self.call("fmi2GetReal", (ctypes.c_uint * len(reals))(*reals), len(reals),
+                                real_values)
+        int_values = (ctypes.c_int * max(len(integers), 1))()
+        int_status = self.call("fmi2GetInteger", (ctypes.c_uint * max(len(integers), 1))(*integers),
+                               len(integers), int_values)
+        state = ctypes.c_void_p()
+        assert self.call("fmi2GetFMUstate", ctypes.byref(state)) == 0, self.messages[-1:]
+        size = ctypes.c_size_t()
+        assert self.call("fmi2SerializedFMUstateSize", state, ctypes.byref(size)) == 0
+        image = (ctypes.c_char * size.value)()
+        assert self.call("fmi2SerializeFMUstate", state, image, size.value) == 0
+        assert self.call("fmi2FreeFMUstate", ctypes.byref(state)) == 0
+        del self.messages[n_messages:]
+        bits = np.array(real_values[:], dtype=float).view(np.uint64).tolist()
+        return real_status, bits, int_status, list(int_values), bytes(image)
+
     def free(self):
         if self.component is not None:
             self.fmu.freeInstance()

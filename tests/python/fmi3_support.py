@@ -132,6 +132,27 @@ class Instance3:
                            *[ctypes.byref(f) for f in flags], ctypes.byref(last))
         return status, last.value
 
+    def snapshot(self):
+        """What a refused call must leave as it was: the bits of every variable read through
+        fmi3GetFloat64 and fmi3GetInt64 (with the statuses), and the serialized FMU state."""
+        n_messages = len(self.messages)
+        floats = [n for n, v in self.variables.items() if v.type == "Float64"]
+        status, values = self.get_raw(floats)
+        bits = np.concatenate([values[n] for n in floats]).view(np.uint64).tolist()
+        enums = [n for n, v in self.variables.items() if v.type == "Enumeration"]
+        ints = (ctypes.c_int64 * max(len(enums), 1))()
+        int_status = self.call("fmi3GetInt64", vrs(self.vr[n] for n in enums), len(enums), ints,
+                               len(enums))
+        state = ctypes.c_void_p()
+        assert self.call("fmi3GetFMUState", ctypes.byref(state)) == OK, self.messages[-1:]
+        size = ctypes.c_size_t()
+        assert self.call("fmi3SerializedFMUStateSize", state, ctypes.byref(size)) == OK
+        image = (ctypes.c_uint8 * size.value)()
+        assert self.call("fmi3SerializeFMUState", state, image, size.value) == OK
+        assert self.call("fmi3FreeFMUState", ctypes.byref(state)) == OK
+        del self.messages[n_messages:]
+        return status, bits, int_status, list(ints), bytes(image)
+
     def free(self):
         if self.component is not None:
             self.fmu.freeInstance()

@@ -156,11 +156,14 @@ def test_reference_results_are_right(folder, interface, report):
     assert worst < 1e-14
 
 
-def move(path, row, column, element=0, factor=1 + 1e-9):
+def move(path, row, column, element=0, tolerances=3.0):
+    """One value moved by `tolerances` times the tolerance the cross-check promises,
+    1e-12 + 1e-12 |value|."""
     lines = path.read_text().splitlines()
     cells = lines[row].split(",")
     values = cells[column].split()
-    values[element] = repr(float(values[element]) * factor)
+    value = float(values[element])
+    values[element] = repr(value + tolerances * (1e-12 + 1e-12 * abs(value)))
     cells[column] = " ".join(values)
     lines[row] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n")
@@ -173,12 +176,22 @@ def test_ci_check_passes_then_fails_on_a_moved_value(folder, report):
     assert done.stdout.count(" ok ") == FOLDERS
     assert done.stdout.count("largest deviation 0\n") == FOLDERS
 
-    here = model_folder(folder, "2.0", "me", "win64", "EulerRates")
-    move(here / "EulerRates_ref.csv", 200, 1)  # theta_dot[1] at t = 1.99 s
-    here = model_folder(folder, "3.0", "cs", "aarch64-linux", "AttitudePropagator")
-    move(here / "AttitudePropagator_ref.csv", 301, 1, element=2)  # q[3] at t = 3 s
+    # Half the tolerance passes (a tolerance 10 times tighter would not), three times fails (a
+    # tolerance 10 times looser would not).
+    euler = model_folder(folder, "2.0", "me", "win64", "EulerRates") / "EulerRates_ref.csv"
+    attitude = (model_folder(folder, "3.0", "cs", "aarch64-linux", "AttitudePropagator") /
+                "AttitudePropagator_ref.csv")
+    saved = {path: path.read_text() for path in (euler, attitude)}
+    move(euler, 200, 1, tolerances=0.5)
     done = run(ROOT / "examples" / "ci_check.py", "--cross-check", folder)
-    report(f"a 1e-9 relative change of one value in each of two folders: exit {done.returncode}")
+    assert done.returncode == 0, done.stdout
+    assert done.stdout.count(" ok ") == FOLDERS
+    for path, text in saved.items():
+        path.write_text(text)
+    move(euler, 200, 1)  # theta_dot[1] at t = 1.99 s
+    move(attitude, 301, 1, element=2)  # q[3] at t = 3 s
+    done = run(ROOT / "examples" / "ci_check.py", "--cross-check", folder)
+    report(f"one value in each of two folders moved by 3 tolerances: exit {done.returncode}")
     assert done.returncode == 1, done.stdout
     assert "DIFFERENT me EulerRates theta_dot[1]" in done.stdout and "t = 1.99 s" in done.stdout
     assert "DIFFERENT cs AttitudePropagator q[3]" in done.stdout and "t = 3 s" in done.stdout

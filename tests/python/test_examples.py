@@ -69,13 +69,16 @@ def test_ci_check_passes_on_the_stored_reference(fmu_path):
     assert "PASSED" in done.stdout and "REGRESSION" not in done.stdout
 
 
-def tampered(tmp_path, column, row, relative):
+def tampered(tmp_path, column, row, relative=0.0, tolerances=0.0):
+    """The stored reference with one value moved: by `relative` times itself, or by `tolerances`
+    times the tolerance ci_check promises, 1e-12 + 1e-12 |value|."""
     lines = STORED_REFERENCE.read_text().splitlines()
     k = lines[0].split(",").index(column)
     values = lines[1 + row].split(",")
-    values[k] = repr(float(values[k]) * (1 + relative))
+    value = float(values[k])
+    values[k] = repr(value * (1 + relative) + tolerances * (1e-12 + 1e-12 * abs(value)))
     lines[1 + row] = ",".join(values)
-    path = tmp_path / f"tampered_{relative:g}.csv"
+    path = tmp_path / f"tampered_{relative:g}_{tolerances:g}.csv"
     path.write_text("\n".join(lines) + "\n")
     return path
 
@@ -112,7 +115,9 @@ def test_ci_check_help_is_complete():
 
 
 def test_ci_check_fails_on_a_regression(fmu_path, tmp_path):
-    done = run(CI_CHECK, "--fmu", fmu_path, "--reference", tampered(tmp_path, "alpha_body[2]", 100, 1e-9))
+    """Three times the tolerance away: a check with a tolerance 10 times looser would pass it."""
+    done = run(CI_CHECK, "--fmu", fmu_path, "--reference",
+               tampered(tmp_path, "alpha_body[2]", 100, tolerances=3.0))
     assert done.returncode == 1, done.stdout + done.stderr
     assert [line.split()[1] for line in done.stdout.splitlines() if "REGRESSION" in line] == ["alpha_body[2]"]
     assert "FAILED" in done.stdout
@@ -123,8 +128,17 @@ def test_ci_check_tolerates_last_bit_differences(fmu_path, tmp_path):
     assert done.returncode == 0, done.stdout
 
 
+def test_ci_check_tolerates_half_its_tolerance(fmu_path, tmp_path):
+    """Half the tolerance away: a check with a tolerance 10 times tighter would fail it."""
+    done = run(CI_CHECK, "--fmu", fmu_path, "--reference",
+               tampered(tmp_path, "alpha_body[2]", 100, tolerances=0.5))
+    assert done.returncode == 0, done.stdout
+    line = next(line for line in done.stdout.splitlines() if "alpha_body[2]" in line)
+    assert "(0.5 of the tolerance)" in line, line
+
+
 def test_ci_check_refuses_another_trajectory(fmu_path, tmp_path):
-    done = run(CI_CHECK, "--fmu", fmu_path, "--reference", tampered(tmp_path, "theta[1]", 10, 1e-6))
+    done = run(CI_CHECK, "--fmu", fmu_path, "--reference", tampered(tmp_path, "theta[1]", 10, relative=1e-6))
     assert done.returncode == 2, done.stdout
 
 

@@ -122,6 +122,7 @@ def test_function_allowed_exactly_in_the_standard_states(function, fmi_type):
         instance = Instance3("AngularKinematics", fmi_type=fmi_type)
         try:
             enter(instance, state, me)
+            before = instance.snapshot()
             status = call(instance, function)
             if state in allowed:
                 assert status == OK, (function, state, instance.messages)
@@ -135,6 +136,8 @@ def test_function_allowed_exactly_in_the_standard_states(function, fmi_type):
                 assert "not available to this instance" in message, message
             else:
                 assert f"illegal call in state {state}" in message, message
+            # Refused: every variable and the FMU state bit for bit as before the call.
+            assert instance.snapshot() == before, (function, state)
             # Still usable: a reset works and the instance can be initialized again.
             assert instance.call("fmi3Reset") == OK
             enter(instance, "Initialization Mode", me)
@@ -192,18 +195,22 @@ def test_state_functions_with_states_allowed_exactly_in_the_standard_states(func
         instance = Instance3("AttitudePropagator", fmi_type="ModelExchange")
         try:
             enter(instance, state, True)
+            before = instance.snapshot()
             status = make_call(instance)
             if state in allowed:
                 assert status == OK, (function, state, instance.messages)
                 continue
             assert status == ERROR, (function, state)
             assert instance.errors()[-1].startswith(f"{function}: illegal call in state {state}")
+            assert instance.snapshot() == before, (function, state)
         finally:
             instance.free()
     cs = Instance3("AttitudePropagator")
     try:
         enter(cs, "Step Mode", False)
+        before = cs.snapshot()
         assert make_call(cs) == ERROR and "not available to this instance" in cs.errors()[-1]
+        assert cs.snapshot() == before
     finally:
         cs.free()
 

@@ -46,8 +46,10 @@ ILLEGAL_IN_INSTANTIATED = [
 def test_illegal_call_in_instantiated_state(function, args, model, make_model_instance):
     expected = fresh_outputs(make_model_instance, model, model.valid_inputs)
     instance = make_model_instance()
+    before = instance.snapshot()
     assert instance.call(function, *args) == 3
     assert instance.errors() == [f"{function}: illegal call in state Instantiated"]
+    assert instance.snapshot() == before
     # Nothing was lost: the instance goes on as if the call had not been made.
     instance.initialize(inputs=model.valid_inputs)
     assert np.array_equal(instance.get(model.outputs), expected)
@@ -57,14 +59,18 @@ def test_illegal_calls_after_initialization_and_termination(model, make_model_in
     expected = fresh_outputs(make_model_instance, model)
     instance = make_model_instance()
     instance.initialize()
-    for function in ("fmi2SetupExperiment", "fmi2EnterInitializationMode"):
-        args = (0, 0.0, 0.0, 0, 0.0) if function == "fmi2SetupExperiment" else ()
+    refused = [("fmi2SetupExperiment", (0, 0.0, 0.0, 0, 0.0)), ("fmi2EnterInitializationMode", ()),
+               ("fmi2ExitInitializationMode", ())]
+    for function, args in refused:
+        before = instance.snapshot()
         assert instance.call(function, *args) == 3
-    assert instance.call("fmi2ExitInitializationMode") == 3
+        assert instance.snapshot() == before, function
     assert instance.call("fmi2Terminate") == 0
+    before = instance.snapshot()
     assert instance.call("fmi2DoStep", 0.0, 0.1, 1) == 3
     assert instance.set({model.inputs[0]: 1.0}) == 3
     assert instance.call("fmi2Terminate") == 3
+    assert instance.snapshot() == before
     assert instance.errors() == [
         "fmi2SetupExperiment: illegal call in state StepComplete",
         "fmi2EnterInitializationMode: illegal call in state StepComplete",
@@ -172,8 +178,10 @@ def test_bad_step_is_refused_and_changes_nothing(t, h, message, model, make_mode
     instance = make_model_instance()
     instance.initialize(inputs=model.valid_inputs)
     instance.fmu.doStep(0.0, 0.2)
+    before = instance.snapshot()
     assert instance.call("fmi2DoStep", t, h, 1) == 3
     assert instance.errors() == [message]
+    assert instance.snapshot() == before
     assert instance.fmu.getRealStatus(2) == 0.2
     assert instance.call("fmi2DoStep", 0.2, 0.1, 1) == 0
 
@@ -196,8 +204,10 @@ def test_step_within_relative_tolerance_of_last_point_is_accepted(make_model_ins
 ])
 def test_bad_experiment_setup_is_refused(args, message, make_model_instance):
     instance = make_model_instance()
+    before = instance.snapshot()
     assert instance.call("fmi2SetupExperiment", *args) == 3
     assert instance.errors() == [message]
+    assert instance.snapshot() == before
     assert instance.call("fmi2SetupExperiment", 0, 0.0, 2.0, 1, 3.0) == 0
     instance.fmu.enterInitializationMode()
     instance.fmu.exitInitializationMode()

@@ -143,8 +143,10 @@ ILLEGAL = [
 def test_illegal_model_exchange_calls_are_refused(state, function, args, make_model_instance):
     instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, state)
+    before = instance.snapshot()
     assert instance.call(function, *args) == 3
     assert instance.errors() == [f"{function}: illegal call in state {state}"]
+    assert instance.snapshot() == before
     # The state is unchanged: a call legal there still works.
     legal = {"Instantiated": ("fmi2SetupExperiment", (0, 0.0, 0.0, 0, 0.0)),
              "InitializationMode": ("fmi2ExitInitializationMode", ()),
@@ -164,8 +166,10 @@ def test_co_simulation_functions_are_refused_on_model_exchange_instances(functio
                                                                           make_model_instance):
     instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, "EventMode")
+    before = instance.snapshot()
     status = call_other_interface(instance, function, *args)
     assert status == 3
+    assert instance.snapshot() == before
     assert instance.errors() == [f"{function}: a co-simulation function, but this instance was "
                                  "created for model exchange (fmi2ModelExchange)"]
 
@@ -180,8 +184,10 @@ def test_model_exchange_functions_are_refused_on_co_simulation_instances(functio
                                                                           make_model_instance):
     instance = make_model_instance()
     instance.initialize()
+    before = instance.snapshot()
     status = call_other_interface(instance, function, *args)
     assert status == 3
+    assert instance.snapshot() == before
     assert instance.errors() == [f"{function}: a model-exchange function, but this instance was "
                                  "created for co-simulation (fmi2CoSimulation)"]
     assert instance.call("fmi2DoStep", 0.0, 0.1, 1) == 0
@@ -201,7 +207,9 @@ def test_state_and_indicator_arrays_must_have_the_described_length(function, nam
     instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, "ContinuousTimeMode")
     buffer = (ctypes.c_double * (length + 1))(*([1.0] * (length + 1)))
+    before = instance.snapshot()
     assert instance.call(function, buffer, length + 1) == 3
+    assert instance.snapshot() == before
     if length == 0:
         kinds = "no event indicators" if states else "no continuous states and no event indicators"
         expected = f"{function}: {name} = 1, but this FMU has {kinds} ({name} must be 0)"
@@ -215,10 +223,14 @@ def test_state_and_indicator_arrays_must_have_the_described_length(function, nam
 def test_null_and_non_finite_arguments(make_model_instance):
     instance = make_model_instance(fmi_type="ModelExchange")
     walk_to(instance, "EventMode")
+    before = instance.snapshot()
     assert instance.call("fmi2NewDiscreteStates", None) == 3
+    assert instance.snapshot() == before
     instance.fmu.enterContinuousTimeMode()
+    before = instance.snapshot()
     assert instance.call("fmi2SetTime", float("nan")) == 3
     assert instance.call("fmi2CompletedIntegratorStep", 1, None, ctypes.byref(ctypes.c_int())) == 3
+    assert instance.snapshot() == before
     assert instance.errors() == ["fmi2NewDiscreteStates: eventInfo is NULL",
                                  "fmi2SetTime: time = nan is not finite",
                                  "fmi2CompletedIntegratorStep: enterEventMode is NULL"]
