@@ -98,11 +98,11 @@ function(ak_add_fmu3 model)
     COMMAND ${CMAKE_COMMAND} -E make_directory "${_package}/extra/org.fmi-standard.fmi-ls-ref"
     COMMAND ${CMAKE_COMMAND} -E copy ${_ls_ref} "${_package}/extra/org.fmi-standard.fmi-ls-ref/"
     COMMAND ${CMAKE_COMMAND} -E make_directory "${AK_DIST_DIR}/fmi3"
-    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py" "${_package}" "${_fmu}"
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py" "${_package}" "${_fmu}"
     WORKING_DIRECTORY "${CMAKE_BINARY_DIR}"
     DEPENDS ${_target} "${_folder}/modelDescription.xml" "${_folder}/buildDescription.xml"
             "${_folder}/documentation/index.html" ${_figures} "${CMAKE_SOURCE_DIR}/model.png" ${_packaged}
-            ${_extra} ${_ls_ref} "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py"
+            ${_extra} ${_ls_ref} "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py"
     COMMENT "Packaging ${_fmu}"
     VERBATIM)
   add_custom_target(fmu3_${model} ALL DEPENDS "${_fmu}")

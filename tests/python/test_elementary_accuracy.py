@@ -9,9 +9,9 @@ import sys
 
 import pytest
 
+from tools.elementary import accuracy
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools" / "elementary"))
-import accuracy  # noqa: E402
 
 ARGUMENTS_PER_FUNCTION = 3000
 SEED = 20261125

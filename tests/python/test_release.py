@@ -11,15 +11,14 @@ import re
 import shutil
 import struct
 import subprocess
-import sys
 import zipfile
 
 import pytest
 
+from codegen.project import MODELS, VERSION
+from tools.zip_fmu import DEFAULT_DATE, fixed_date, pack
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "cmake"))
-from codegen.project import MODELS, VERSION  # noqa: E402
-from zip_fmu import DEFAULT_DATE, fixed_date, pack  # noqa: E402
 
 
 # (staged folder in build/, archive in dist/, binaries inside) of each model's FMI 2 and FMI 3 FMU

@@ -12,11 +12,10 @@ import numpy as np
 import pytest
 from lxml import etree
 
+from examples.ssp import round_trip, ssd_to_svg
+from examples.ssp.make_ssp import make_ssp
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "examples" / "ssp"))
-import round_trip  # noqa: E402
-import ssd_to_svg  # noqa: E402
-from make_ssp import make_ssp  # noqa: E402
 
 SCHEMA = pathlib.Path(fmpy.__file__).parent / "ssp" / "schema" / "SystemStructureDescription.xsd"
 
