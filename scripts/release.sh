@@ -7,7 +7,7 @@
 #   3. every file of the two dist/ folders compared byte for byte (no timestamps or build paths);
 #   4. the version attribute of every modelDescription.xml, CMake's project version
 #      (build/CMakeCache.txt) and the "version X.Y.Z" of the FMU documentation equal to VERSION;
-#   5. the first clone's dist/ in place of dist/ here (its README.md is the build's, like ours), with
+#   5. the first clone's dist/ in place of dist/ here (its README.md is the committed one), with
 #      dist/SHA256SUMS of every file it ships, checked with sha256sum -c.
 # Uncommitted changes are not part of a release: commit first. Takes about two builds' time.
 #   bash scripts/release.sh

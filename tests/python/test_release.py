@@ -159,7 +159,7 @@ def test_dist_readme_names_what_the_build_writes(fmu_path, euler_fmu_path):
     assert named == fmus | {"cross-check/", "ssp/RoundTrip.ssp", "SHA256SUMS"}
     built = {p.relative_to(dist).as_posix() for p in [*dist.glob("*.fmu"), *dist.glob("fmi3/*")]}
     assert built == fmus
-    # The build wrote it (cmake/fmi3.cmake): the committed file is the build's, not stale.
+    # python -m codegen writes it (codegen/docs.py): the working file is the committed one.
     committed = subprocess.run(["git", "show", ":dist/README.md"], cwd=ROOT, capture_output=True,
                                text=True, check=True).stdout
     assert committed == readme

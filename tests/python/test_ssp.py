@@ -72,5 +72,5 @@ def test_docs_picture_is_drawn_from_this_ssd(ssp):
     with zipfile.ZipFile(ssp) as archive:
         drawn = ssd_to_svg.svg(archive.read("SystemStructure.ssd"))
     assert (ROOT / "docs" / "round_trip_ssp.svg").read_text() == drawn, \
-        "regenerate: .venv/bin/python examples/ssp/ssd_to_svg.py dist/ssp/RoundTrip.ssp docs/round_trip_ssp.svg"
+        "regenerate: .venv/bin/python -m codegen"
     assert drawn.count("<path d=\"M") - 1 == 9  # 9 vector connections (arrow head aside)
