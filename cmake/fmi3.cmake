@@ -98,11 +98,11 @@ function(ak_add_fmu3 model)
     COMMAND ${CMAKE_COMMAND} -E make_directory "${_package}/extra/org.fmi-standard.fmi-ls-ref"
     COMMAND ${CMAKE_COMMAND} -E copy ${_ls_ref} "${_package}/extra/org.fmi-standard.fmi-ls-ref/"
     COMMAND ${CMAKE_COMMAND} -E make_directory "${AK_DIST_DIR}/fmi3"
-    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py" "${_package}" "${_fmu}"
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py" "${_package}" "${_fmu}"
     WORKING_DIRECTORY "${CMAKE_BINARY_DIR}"
     DEPENDS ${_target} "${_folder}/modelDescription.xml" "${_folder}/buildDescription.xml"
             "${_folder}/documentation/index.html" ${_figures} "${CMAKE_SOURCE_DIR}/model.png" ${_packaged}
-            ${_extra} ${_ls_ref} "${CMAKE_SOURCE_DIR}/cmake/zip_fmu.py"
+            ${_extra} ${_ls_ref} "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py"
     COMMENT "Packaging ${_fmu}"
     VERBATIM)
   add_custom_target(fmu3_${model} ALL DEPENDS "${_fmu}")
@@ -112,21 +112,6 @@ foreach(_model IN LISTS AK_MODELS)
   ak_add_fmu3(${_model})
 endforeach()
 
-# dist/README.md: what this build and scripts/release.sh write there, one line per model.
-if(AK_PACKAGE_FMU)
-  set(AK_DIST_FMI2_LINES "")
-  set(AK_DIST_FMI3_LINES "")
-  foreach(_model IN LISTS AK_MODELS)
-    string(APPEND AK_DIST_FMI2_LINES "- `${_model}.fmu`: FMI 2.0, Co-Simulation and Model Exchange, "
-                                     "binaries linux64, win64, win32 and darwin64 (universal: x86_64 "
-                                     "and arm64), C sources\n")
-    string(APPEND AK_DIST_FMI3_LINES "- `fmi3/${_model}.fmu`: FMI 3.0, Co-Simulation and Model Exchange, "
-                                     "binaries x86_64-linux, aarch64-linux, x86_64-windows, "
-                                     "x86-windows, x86_64-darwin and aarch64-darwin, C sources\n")
-  endforeach()
-  string(STRIP "${AK_DIST_FMI3_LINES}" AK_DIST_FMI3_LINES)
-  configure_file(cmake/dist_README.md.in "${AK_DIST_DIR}/README.md" @ONLY NEWLINE_STYLE UNIX)
-endif()
 # Every model's FMI 3 binary, for the builds that only make another platform's (scripts/build.sh).
 list(TRANSFORM AK_MODELS APPEND _fmi3 OUTPUT_VARIABLE _fmi3_targets)
 add_custom_target(fmi3_binaries DEPENDS ${_fmi3_targets})

@@ -4,6 +4,8 @@
   Enumeration Sequence and the capability flags;
 - README.md's table of the FMUs (between the BEGIN/END markers);
 - documentation/models.svg, a copy of docs/models.svg (a figure the FMUs' pages show);
+- dist/README.md, what the build and the release write into dist/, one line per model (the one
+  file of dist/ that is committed);
 - with --figures (`python -m codegen --figures`, needs the built FMU): model.png and the demo's
   plot documentation/tumbling_body.png, redrawn.
 
@@ -208,10 +210,32 @@ def redraw_figures():
         (ROOT / "results" / "documentation" / "tumbling_body.png").read_bytes())
 
 
+def dist_readme():
+    fmi2 = [f"- `{model}.fmu`: FMI 2.0, Co-Simulation and Model Exchange, binaries linux64, win64, "
+            "win32 and darwin64 (universal: x86_64 and arm64), C sources" for model in MODELS]
+    fmi3 = [f"- `fmi3/{model}.fmu`: FMI 3.0, Co-Simulation and Model Exchange, binaries "
+            "x86_64-linux, aarch64-linux, x86_64-windows, x86-windows, x86_64-darwin and "
+            "aarch64-darwin, C sources" for model in MODELS]
+    return "\n".join([
+        "# dist/: what the build writes", "",
+        "Build output only; this file is the only one committed, written by `python -m codegen`",
+        "(codegen/docs.py) from the model list of codegen/project.py.", "",
+        "`bash scripts/build.sh` writes, one per model:", "", *fmi2, "", *fmi3, "",
+        "`bash scripts/release.sh` puts the release here, made twice from clean clones and compared byte",
+        "for byte: the files above, this README and", "",
+        "- `cross-check/`: every FMI 2 FMU with its reference inputs and outputs in the FMI Cross-Check",
+        "  layout (`scripts/make_cross_check.py`)",
+        "- `ssp/RoundTrip.ssp`: the SSP 1.0 system of AngularKinematics and EulerRates "
+        "(`examples/ssp/make_ssp.py`)",
+        "- `SHA256SUMS`: the SHA-256 of every other file; check with "
+        "`cd dist && sha256sum -c SHA256SUMS`", ""])
+
+
 def outputs():
-    """{path: text} of the files written from the modelDescription.xml files."""
+    """{path: text} of the files written from the modelDescription.xml files and the model list."""
     models = roots()
     return {README: render_readme(README.read_text(),
                                   {"models": markdown_table(*model_rows(models))}),
             VARIABLES: render_variables(models),
-            ROOT / "documentation" / "models.svg": MODELS_FIGURE.read_text()}
+            ROOT / "documentation" / "models.svg": MODELS_FIGURE.read_text(),
+            ROOT / "dist" / "README.md": dist_readme()}

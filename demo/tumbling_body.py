@@ -13,7 +13,7 @@ from fmpy import simulate_fmu
 from fmpy.util import write_csv
 from tqdm import tqdm
 
-import trajectories
+from demo import trajectories
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 VECTORS = ("omega_fixed", "omega_body", "alpha_fixed", "alpha_body")

@@ -150,8 +150,10 @@ def cross_check(folder):
     """--cross-check DIR: examples/cross_check.py and cross_check3.py (copy them beside this file)
     re-simulate every <Model>_in.csv under DIR, FMI 2.0 and 3.0, and compare with <Model>_ref.csv;
     exit 0 equal, 1 different, 2 empty."""
-    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-    from cross_check import check_folder
+    if __package__:  # examples.ci_check, in the repository
+        from examples.cross_check import check_folder
+    else:  # run as a file: cross_check.py beside it (the script's folder is on the path)
+        from cross_check import check_folder
     status = check_folder(pathlib.Path(folder))
     print({0: "PASSED: the cross-check results agree", 1: "FAILED: a result differs",
            2: "ERROR: nothing to compare"}[status])
@@ -161,8 +163,10 @@ def cross_check(folder):
 def carried_reference(fmu):
     """--ls-ref FMU: examples/ls_ref.py (copy it and cross_check*.py beside this file) re-simulates
     the FMU over the inputs it carries; exit 0 equal, 1 different, 2 nothing carried."""
-    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-    from ls_ref import check_carried
+    if __package__:
+        from examples.ls_ref import check_carried
+    else:
+        from ls_ref import check_carried
     status = check_carried(pathlib.Path(fmu))
     print({0: "PASSED: the FMU computes the result it carries", 1: "FAILED: a result differs",
            2: "ERROR: nothing to compare"}[status])

@@ -25,7 +25,10 @@ import numpy as np
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Model, FMU2Slave
 
-from cross_check3 import euler_step, simulate3
+if __package__:  # examples.cross_check, in the repository
+    from examples.cross_check3 import euler_step, simulate3
+else:  # copied beside examples/ci_check.py, which imports it as a file of its folder
+    from cross_check3 import euler_step, simulate3
 
 RELATIVE = 1e-12
 ABSOLUTE = 1e-12

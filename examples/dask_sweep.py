@@ -3,7 +3,7 @@
 Each simulation is one task on a dask.distributed cluster: a tumbling trajectory of its own
 (theta_i(t) = rate_i t + amplitude_i sin(frequency_i t + phase_i), parameters drawn from a seeded
 generator), simulated with fmpy, and checked on the worker against the project's independent sympy
-reference (tests/python/reference.py): the worst error over the checked rows, scaled as in the tests, must
+reference (codegen/reference.py): the worst error over the checked rows, scaled as in the tests, must
 not exceed --tolerance. The client collects every case's figures, writes them to a CSV and exits
 with status 1 if any case fails.
 
@@ -119,7 +119,7 @@ def main(argv=None):
         client = Client(cluster)
     started = time.perf_counter()
     try:
-        client.upload_file(str(ROOT / "tests" / "python" / "reference.py"))
+        client.upload_file(str(ROOT / "codegen" / "reference.py"))
         client.upload_file(str(ROOT / "demo" / "trajectories.py"))
         fmu_future = client.scatter(fmu_bytes, broadcast=True)
         futures = [client.submit(run_case, case, fmu_future, args.stop_time, args.step,

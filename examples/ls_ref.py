@@ -11,7 +11,10 @@ import zipfile
 
 from fmpy import read_model_description
 
-from cross_check import check_model, read_csv
+if __package__:  # examples.ls_ref, in the repository
+    from examples.cross_check import check_model, read_csv
+else:  # copied beside examples/ci_check.py, which imports it as a file of its folder
+    from cross_check import check_model, read_csv
 
 FOLDER = "extra/org.fmi-standard.fmi-ls-ref/"
 LS_NAME = "org.fmi-standard.fmi-ls-ref"

@@ -6,7 +6,7 @@ list (then _data/tools.csv, now static/assets/tools.json); a new tool gets one b
 to modelica/fmi-standard.org that adds its entry. AngularKinematics is not listed yet: this is the
 ID such an entry would carry (letters only, as the listed IDs), to be confirmed there before the
 folder is submitted."""
-from cross_check import START, STEP, STOP
+from examples.cross_check import START, STEP, STOP
 
 TOOL_ID = "AngularKinematics"
 HOST = {"2.0": "linux64", "3.0": "x86_64-linux"}

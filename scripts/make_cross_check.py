@@ -13,13 +13,12 @@ import zipfile
 import numpy as np
 from fmpy import read_model_description
 
+from codegen.project import VERSION
+from examples.cross_check import START, STEP, STOP, reference_inputs, simulate, write_csv
+from examples.cross_check3 import simulate3, write_csv3
+from scripts.cross_check_readme import TOOL_ID, readme
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
-sys.path.insert(0, str(ROOT))
-from codegen.project import VERSION  # noqa: E402
-from cross_check import START, STEP, STOP, reference_inputs, simulate, write_csv  # noqa: E402
-from cross_check3 import simulate3, write_csv3  # noqa: E402
-from cross_check_readme import TOOL_ID, readme  # noqa: E402
 
 # The reference variables (the rules recommend at most 10), FMI 2 names; in FMI 3 the arrays that
 # hold these elements. Together they determine the main outputs: omega and alpha in the fixed

@@ -13,9 +13,8 @@ import pathlib
 import shutil
 import sys
 
-from make_cross_check import ROOT, reference_run
-
-from cross_check import START, STEP, STOP  # noqa: E402 (make_cross_check put examples/ on the path)
+from examples.cross_check import START, STEP, STOP
+from scripts.make_cross_check import ROOT, reference_run
 
 LS_NAME, LS_VERSION = "org.fmi-standard.fmi-ls-ref", "1.0.0-alpha.1"
 # The draft's root attribute (github.com/modelica/fmi-ls-ref, schema/...ReferenceManifest.xsd).

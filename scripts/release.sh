@@ -7,7 +7,7 @@
 #   3. every file of the two dist/ folders compared byte for byte (no timestamps or build paths);
 #   4. the version attribute of every modelDescription.xml, CMake's project version
 #      (build/CMakeCache.txt) and the "version X.Y.Z" of the FMU documentation equal to VERSION;
-#   5. the first clone's dist/ in place of dist/ here (its README.md is the build's, like ours), with
+#   5. the first clone's dist/ in place of dist/ here (its README.md is the committed one), with
 #      dist/SHA256SUMS of every file it ships, checked with sha256sum -c.
 # Uncommitted changes are not part of a release: commit first. Takes about two builds' time.
 #   bash scripts/release.sh
@@ -40,9 +40,11 @@ for side in one two; do
     cd "$clone"
     bash scripts/setup.sh >/dev/null
     bash scripts/build.sh >build.log 2>&1 || { tail -40 build.log; exit 1; }
-    .venv/bin/python scripts/make_cross_check.py >/dev/null
-    .venv/bin/python examples/ssp/make_ssp.py >/dev/null
-    .venv/bin/python examples/ssp/make_tumbling_ssp.py >/dev/null
+    # As modules from the clone's root: its own packages come first, not those of the checkout
+    # whose .venv it shares (installed editable there).
+    .venv/bin/python -m scripts.make_cross_check >/dev/null
+    .venv/bin/python -m examples.ssp.make_ssp >/dev/null
+    .venv/bin/python -m examples.ssp.make_tumbling_ssp >/dev/null
   ) || fail "the build in $clone failed"
 done
 

@@ -3,7 +3,8 @@
 # binaries (x86_64 and i686), gcc-aarch64-linux-gnu and qemu-user for the aarch64-linux FMI 3
 # binary (from Debian's packages if missing; with --with-wine also wine, to test the Windows
 # binary), and a Python virtual environment .venv with the pinned packages of requirements.txt,
-# among them zig (ziglang) for the macOS binaries and the proof builds (docs/platforms.md).
+# among them zig (ziglang) for the macOS binaries and the proof builds (docs/platforms.md), and the
+# project's own packages (pyproject.toml) installed editable.
 # Idempotent: a second run installs nothing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,4 +60,17 @@ fi
 if [ ! -f "$stamp" ] || ! cmp -s requirements.txt "$stamp"; then
   .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
   cp requirements.txt "$stamp"
+fi
+
+# The project's own packages (pyproject.toml: codegen, examples, demo, scripts, bench, tools),
+# editable, so that every module imports the others by package name from anywhere. Again when
+# pyproject.toml changed or the install no longer imports (the checkout moved). A .venv linked
+# from another checkout (scripts/release.sh's clones) keeps that checkout's install: the clone
+# runs its modules with python -m from its own root, where its own packages come first.
+project_stamp=.venv/.project-installed
+python=$PWD/.venv/bin/python
+if [ ! -f "$project_stamp" ] || ! cmp -s pyproject.toml "$project_stamp" ||
+  ! (cd / && "$python" -c "import codegen.project") >/dev/null 2>&1; then
+  .venv/bin/python -m pip install --quiet --disable-pip-version-check --no-deps -e .
+  cp pyproject.toml "$project_stamp"
 fi

@@ -15,7 +15,7 @@ OMSimulator wants on a root system and SSP allows (ssc:Annotation); the other to
     .venv/bin/python examples/ssp/make_tumbling_ssp.py [--dist DIR] [--out FILE]"""
 import sys
 
-from make_ssp import NS, ROOT, command, connectors_xml, scalars, write_ssp
+from examples.ssp.make_ssp import NS, ROOT, command, connectors_xml, scalars, write_ssp
 
 STEP, STOP = 2.0 ** -6, 100 * 2.0 ** -6
 OMEGA = (0.4, -0.3, 0.5)  # rad/s, the propagator's input, held

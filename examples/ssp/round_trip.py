@@ -21,11 +21,10 @@ import sys
 import numpy as np
 from fmpy.ssp.simulation import simulate_ssp
 
+from demo.trajectories import tumbling
+from examples.ssp.make_ssp import make_ssp
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "demo"))
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from make_ssp import make_ssp  # noqa: E402
-from trajectories import tumbling  # noqa: E402
 
 HOLD = 2  # communication steps each sample of the trajectory is held
 

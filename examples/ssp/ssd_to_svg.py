@@ -2,7 +2,9 @@
 left, its components in the order of <Elements>, its outputs on the right; the scalar connectors
 theta[1], theta[2], theta[3] are drawn as one port theta[1..3].
 
-    .venv/bin/python examples/ssp/ssd_to_svg.py dist/ssp/RoundTrip.ssp docs/round_trip_ssp.svg"""
+    .venv/bin/python examples/ssp/ssd_to_svg.py dist/ssp/RoundTrip.ssp OUT.svg
+
+python -m codegen draws docs/round_trip_ssp.svg with it (codegen/ssp_figure.py)."""
 import re
 import sys
 import zipfile

@@ -8,7 +8,6 @@ import os
 import pathlib
 import shutil
 import subprocess
-import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
@@ -21,9 +20,8 @@ from fmpy.logging import addLoggerProxy
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 BUILD_DIR = ROOT / "build"
-sys.path.insert(0, str(ROOT / "demo"))  # the demo's trajectories serve as test signals too
-sys.path.insert(0, str(ROOT))  # codegen: the project's facts and the model descriptions
-from codegen import models, project  # noqa: E402
+
+from codegen import models, project
 
 # The sequences a quick run (pytest -m "not slow") checks: one body-fixed Tait-Bryan, one
 # space-fixed proper Euler; the other 22 cases of each per-sequence test are marked slow.

@@ -1,9 +1,9 @@
 """demo/gimbal_lock.py, bounded: it runs through the first gimbal lock (t = 1 s), writes its plot
 and reports an attitude error at the method's level."""
-import gimbal_lock  # demo/ is on sys.path (conftest.py)
 import pytest
 
 from attitude_support import ATTITUDE_FMU_PATH
+from demo import gimbal_lock
 
 
 @pytest.mark.slow

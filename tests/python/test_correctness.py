@@ -6,7 +6,7 @@ would mean little near gimbal lock, where the outputs cancel far below their ter
 import numpy as np
 import pytest
 
-import reference
+from codegen import reference
 
 TOLERANCE = 1e-14
 RNG_SEED = 20261121

@@ -15,14 +15,13 @@ import pytest
 from fmpy import read_model_description
 from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
 
-import reference
+from codegen import reference
+
+from codegen.project import VERSION
+from examples.cross_check import read_csv, read_options
+from scripts.cross_check_readme import TOOL_ID
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "examples"))
-sys.path.insert(0, str(ROOT / "scripts"))
-from codegen.project import VERSION  # noqa: E402
-from cross_check import read_csv, read_options  # noqa: E402
-from cross_check_readme import TOOL_ID  # noqa: E402
 
 MODELS = ["AngularKinematics", "AttitudePropagator", "EulerRates"]
 PLATFORMS = {"2.0": {"linux64", "win64", "win32", "darwin64"},

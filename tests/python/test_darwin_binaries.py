@@ -7,7 +7,6 @@ minimum macOS version: 10.13 for x86_64, 11.0 for arm64 (cmake/zig-*-macos.cmake
 import pathlib
 import re
 import subprocess
-import sys
 
 import fmpy
 import pytest
@@ -15,12 +14,11 @@ import pytest
 from codegen import project
 from conftest import fmu_files
 from fmi3_support import unzipped
+from tools import check_macho
 
 pytestmark = pytest.mark.external  # the darwin binaries come from the cross builds
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import check_macho  # noqa: E402
 
 MINIMUM = {"x86_64": "macOS 10.13.0", "arm64": "macOS 11.0.0"}
 CASES = [(2, "darwin64", ["x86_64", "arm64"]), (3, "x86_64-darwin", ["x86_64"]),

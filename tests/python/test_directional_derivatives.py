@@ -7,7 +7,7 @@ import ctypes
 import numpy as np
 import pytest
 
-import reference
+from codegen import reference
 from conftest import Model, value_references_of
 
 # The first value reference past AngularKinematics' last (a new variable takes it).

@@ -1,27 +1,24 @@
 """The co-simulation engines people use, from PyPI: libcosim (libcosimpy) and Ecos (ecospy) run every
-FMU of dist/ in Co-Simulation with inputs driven at every step (tests/python/engines.py), and every
+FMU of dist/ in Co-Simulation with inputs driven at every step (examples/engines.py), and every
 output must equal fmpy's run of the same scenario within TOLERANCE (0: bit for bit, both masters
 set the inputs, step and read as fmpy's does); the engine table of docs/cosimulation.md must be
-what scripts/engine_table.py prints. Installed by scripts/setup.sh (requirements.txt) and
-scripts/setup_importers.sh (Debian's libtbb12 for Ecos); outside CI a missing engine skips, in CI
+what python -m codegen writes there (codegen/engine_table.py). Installed by scripts/setup.sh
+(requirements.txt) and scripts/setup_importers.sh (Debian's libtbb12 for Ecos); outside CI a missing engine skips, in CI
 (CI=true) it fails."""
 import importlib
 import os
 import pathlib
-import sys
 
 import numpy as np
 import pytest
 
-import engines
+from codegen import engine_table
+from examples import engines
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "scripts"))
-import engine_table  # noqa: E402
 
 pytestmark = pytest.mark.external  # PyPI engines with native libraries (Ecos: Debian's libtbb12)
 TOLERANCE = {"libcosim": 0.0, "Ecos": 0.0}  # largest |difference| from fmpy allowed
-MODULES = {"libcosim": "libcosimpy.CosimExecution", "Ecos": "ecospy"}
 # What each engine says to an FMI 3.0 FMU: libcosim 0.0.6 refuses the FMI version; Ecos 0.7.2 loads
 # it but has no fmu::theta[1]: it gives each array one scalar property (fmu::theta).
 EXPECTED_FMI3 = {"libcosim": "not supported: Unsupported feature: Unsupported FMI version for FMU",
@@ -32,7 +29,7 @@ FMI3 = [(model, fmu) for model, version, fmu in engine_table.fmus() if version =
 
 def require(engine):
     try:
-        importlib.import_module(MODULES[engine])
+        importlib.import_module(engine_table.MODULES[engine])
     except (ImportError, OSError) as error:  # OSError: Ecos's libecosc.so without libtbb.so.12
         message = f"{engine} missing ({error}): run bash scripts/setup.sh and scripts/setup_importers.sh"
         if os.environ.get("CI") == "true":
@@ -89,4 +86,4 @@ def test_docs_table_is_current():
         require(engine)
     text = engine_table.DOC.read_text()
     assert engine_table.with_table(text, engine_table.table()) == text, \
-        "regenerate: .venv/bin/python scripts/engine_table.py"
+        "regenerate: .venv/bin/python -m codegen"

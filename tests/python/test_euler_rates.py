@@ -8,7 +8,7 @@ import ctypes
 import numpy as np
 import pytest
 
-import reference
+from codegen import reference
 from codegen.project import SEQUENCES
 
 ER_INPUTS = reference.RATES_INPUTS

@@ -8,7 +8,7 @@ import sys
 import numpy as np
 import pytest
 
-import reference
+from codegen import reference
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 PYTHON = sys.executable
@@ -39,7 +39,7 @@ def test_demo_writes_csv_and_plot(fmu_path, tmp_path):
 
 
 def test_demo_shows_progress_on_runs_past_the_delay(fmu_path, capsys, monkeypatch):
-    import tumbling_body
+    from demo import tumbling_body
     monkeypatch.setattr(tumbling_body, "PROGRESS_DELAY", 0.0)
     tumbling_body.simulate(fmu_path, 1.0, 0.01)
     assert "100/100" in capsys.readouterr().err

@@ -12,7 +12,6 @@ import re
 import pathlib
 import shutil
 import subprocess
-import sys
 import time
 import zipfile
 
@@ -20,10 +19,10 @@ import numpy as np
 import pytest
 from fmpy import read_model_description
 
+from examples.cross_check import (START, STEP, STOP, real_names, reference_inputs, simulate,
+                                  write_csv)
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "examples"))
-from cross_check import (START, STEP, STOP, real_names, reference_inputs, simulate,  # noqa: E402
-                         write_csv)
 
 JAR = ROOT / "examples" / "fmi4j" / "target" / "fmi4j-driver.jar"
 pytestmark = pytest.mark.external  # the JVM

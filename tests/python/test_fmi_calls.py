@@ -7,7 +7,7 @@ import ctypes
 import numpy as np
 import pytest
 
-import reference
+from codegen import reference
 
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
 

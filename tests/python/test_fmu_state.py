@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from fmpy.fmi2 import fmi2FMUstate
 
-import reference
+from codegen import reference
 from conftest import description_path_of, fmu_state_size, value_references_of
 from fmi_layers import observable, set_derivatives
 

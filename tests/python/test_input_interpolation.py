@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-import reference
-import trajectories
+from codegen import reference
+from demo import trajectories
 
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
 

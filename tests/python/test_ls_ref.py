@@ -13,12 +13,12 @@ import numpy as np
 import pytest
 from fmpy import read_model_description
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "examples"))
-from cross_check import read_csv  # noqa: E402
-from ls_ref import FOLDER, LS  # noqa: E402
+from examples.cross_check import read_csv
+from examples.ls_ref import FOLDER, LS
 
-from codegen.project import MODELS  # noqa: E402
+from codegen.project import MODELS
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 CASES = [(v, m) for v in ("fmi2", "fmi3") for m in MODELS]
 

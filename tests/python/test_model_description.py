@@ -10,7 +10,7 @@ from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
 from conftest import ROOT, c_table_of
-from reference import KINEMATICS_INPUTS, KINEMATICS_OUTPUTS, RATES_INPUTS, RATES_OUTPUTS
+from codegen.reference import KINEMATICS_INPUTS, KINEMATICS_OUTPUTS, RATES_INPUTS, RATES_OUTPUTS
 from codegen import project
 from codegen.models import model_description_path
 from codegen.project import SEQUENCES, sequence_description
@@ -194,7 +194,7 @@ def test_model_structure_is_the_c_table_dependencies(model):
 
 def documented_unions(heading):
     """{output: set of inputs} of a union table of docs/sequences.md (made from the sympy reference
-    by tests/python/sequence_dependencies.py)."""
+    by codegen/sequence_tables.py)."""
     text = (ROOT / "docs" / "sequences.md").read_text()
     section = text[text.index(heading):].split("\n\n")[1]
     unions = {}

@@ -8,8 +8,8 @@ import pytest
 from fmpy import simulate_fmu
 from fmpy.fmi2 import fmi2EventInfo
 
-import reference
-import trajectories
+from codegen import reference
+from demo import trajectories
 
 C = ctypes
 # Prototypes of the functions of the other interface, which fmpy does not load for an instance.

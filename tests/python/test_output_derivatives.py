@@ -6,8 +6,8 @@ import ctypes
 import numpy as np
 import pytest
 
-import reference
-import trajectories
+from codegen import reference
+from demo import trajectories
 
 INPUTS = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))
 OMEGA = reference.OUTPUT_NAMES[:6]

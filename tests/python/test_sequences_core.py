@@ -1,5 +1,5 @@
 """The general kinematics core (all 24 rotation sequences) against the independent sympy reference
-of reference.py, reached through the test-only library build/testlib (ctypes), before
+of codegen/reference.py, reached through the test-only library build/testlib (ctypes), before
 any FMI layer uses it.
 
 Errors are measured against the natural size of the terms summed: sum|theta_dot| for omega and
@@ -12,7 +12,7 @@ import sys
 import numpy as np
 import pytest
 
-import reference
+from codegen import reference
 from conftest import sequence_cases
 from codegen.project import SEQUENCES
 

@@ -1,5 +1,5 @@
 """AngularKinematics for all 24 rotation sequences, through the FMU (fmpy), against the independent
-sympy reference (reference.py): every output, the dependencies <ModelStructure> lists,
+sympy reference (codegen/reference.py): every output, the dependencies <ModelStructure> lists,
 the exact directional derivatives and the output derivatives.
 
 Errors are scaled by the natural size of the terms an output sums: sum|theta_dot| for omega and
@@ -9,7 +9,7 @@ import ctypes
 import numpy as np
 import pytest
 
-import reference
+from codegen import reference
 from conftest import sequence_cases
 from codegen.project import SEQUENCES
 

@@ -3,8 +3,8 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-import reference
-import trajectories
+from codegen import reference
+from demo import trajectories
 
 STEP = 1e-3
 STOP = 4.0

@@ -12,11 +12,10 @@ import numpy as np
 import pytest
 from lxml import etree
 
+from examples.ssp import round_trip, ssd_to_svg
+from examples.ssp.make_ssp import make_ssp
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "examples" / "ssp"))
-import round_trip  # noqa: E402
-import ssd_to_svg  # noqa: E402
-from make_ssp import make_ssp  # noqa: E402
 
 SCHEMA = pathlib.Path(fmpy.__file__).parent / "ssp" / "schema" / "SystemStructureDescription.xsd"
 
@@ -73,5 +72,5 @@ def test_docs_picture_is_drawn_from_this_ssd(ssp):
     with zipfile.ZipFile(ssp) as archive:
         drawn = ssd_to_svg.svg(archive.read("SystemStructure.ssd"))
     assert (ROOT / "docs" / "round_trip_ssp.svg").read_text() == drawn, \
-        "regenerate: .venv/bin/python examples/ssp/ssd_to_svg.py dist/ssp/RoundTrip.ssp docs/round_trip_ssp.svg"
+        "regenerate: .venv/bin/python -m codegen"
     assert drawn.count("<path d=\"M") - 1 == 9  # 9 vector connections (arrow head aside)

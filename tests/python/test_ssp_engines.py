@@ -1,15 +1,15 @@
 """Tumbling.ssp (examples/ssp/make_tumbling_ssp.py), the SSP system fmpy, libcosim and Ecos all run:
 self-contained (AttitudePropagator drives the other two), components and connections only, with
 OMSimulator's vendor annotation, schema-valid; each engine's outputs equal fmpy's bit for bit on
-the rows ssp_engines.compare lines up (the masters' differences: docs/cosimulation.md)."""
+the rows examples/ssp/engines.py's compare lines up (the masters' differences: docs/cosimulation.md)."""
 import zipfile
 
 import numpy as np
 import pytest
 from lxml import etree
 
-import ssp_engines
-from test_engines import ROOT, engine_table, require  # engine_table: scripts/
+from examples.ssp import engines as ssp_engines
+from test_engines import ROOT, engine_table, require
 from test_ssp import SCHEMA as SCHEMA_FILE
 
 pytestmark = pytest.mark.external  # the PyPI engines, as test_engines.py
@@ -73,6 +73,6 @@ def test_a_wrong_ssp_output_is_caught():
 def test_the_engines_refuse_round_trip_ssp(engine, message, tmp_path):
     """Why Tumbling.ssp exists: RoundTrip.ssp connects the system's own connectors."""
     require(engine)
-    from make_ssp import make_ssp  # examples/ssp/, on the path through ssp_engines
+    from examples.ssp.make_ssp import make_ssp
     with pytest.raises(Exception, match=message):
         ssp_engines.RUNNERS[engine](make_ssp(ROOT / "dist", tmp_path / "RoundTrip.ssp"))

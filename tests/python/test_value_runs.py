@@ -6,7 +6,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-import reference
+from codegen import reference
 from conftest import description_path_of
 
 # The first value reference past AngularKinematics' last (a new variable takes it), and the Real

@@ -5,7 +5,7 @@ import ctypes
 import numpy as np
 from fmpy import simulate_fmu
 
-import reference
+from codegen import reference
 
 RNG = np.random.default_rng(7)
 START = dict(zip(reference.INPUT_NAMES, [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]))

@@ -6,7 +6,7 @@ SOURCE_DATE_EPOCH when it is set (https://reproducible-builds.org/specs/source-d
 rounded down to even seconds and clamped to 1980..2107, what zip stores). Two builds of the same
 sources give byte-identical .fmu files (scripts/release.sh checks it).
 
-    python3 cmake/zip_fmu.py STAGED_FOLDER ARCHIVE.fmu"""
+    python3 tools/zip_fmu.py STAGED_FOLDER ARCHIVE.fmu"""
 import os
 import pathlib
 import sys

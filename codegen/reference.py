@@ -1,5 +1,7 @@
-"""The tests' one independent reference for the kinematics, all 24 rotation sequences, derived by
-sympy.physics.vector. Self-contained (examples/dask_sweep.py ships this file alone to its workers).
+"""The one independent reference for the kinematics, all 24 rotation sequences, derived by
+sympy.physics.vector: the tests check the FMUs against it, and python -m codegen finds the
+dependency tables of docs/sequences.md on it. Self-contained (examples/dask_sweep.py ships this
+file alone to its workers).
 
 For a sequence "bodyIJK" the body B is oriented in N with ``orient_body_fixed(N, (q1, q2, q3),
 'IJK')``, for "spaceIJK" with ``orient_space_fixed(N, (q1, q2, q3), 'IJK')``. sympy then gives:

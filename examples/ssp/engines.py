@@ -1,15 +1,11 @@
 """examples/ssp/Tumbling.ssp (make_tumbling_ssp.py) run by fmpy's SSP master, libcosim and Ecos from
 the .ssp itself: each returns {"element.output": values after each of STEPS steps of STEP}."""
-import sys
-
 import numpy as np
 from fmpy.ssp.ssd import Parameter, ParameterSet, read_ssd
 from fmpy.ssp.simulation import simulate_ssp
 
-from engines import NANOSECONDS, ROOT, STEP, STEPS
-
-sys.path.insert(0, str(ROOT / "examples" / "ssp"))
-from make_tumbling_ssp import COMPONENTS, scalars  # noqa: E402
+from examples.engines import NANOSECONDS, STEP, STEPS
+from examples.ssp.make_tumbling_ssp import COMPONENTS, scalars
 
 
 def outputs():

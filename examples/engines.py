@@ -10,15 +10,14 @@ previous value, then the new one): an input event at each t_k, so it sets the ta
 themselves rather than interpolated ones; no master sets input derivatives."""
 import pathlib
 import re
-import sys
 import zipfile
 
 import numpy as np
 from fmpy import read_model_description, simulate_fmu
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "examples"))
-from cross_check import real_names, reference_inputs  # noqa: E402
+from examples.cross_check import real_names, reference_inputs
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 STEP = 2.0 ** -6
 STEPS = 100

@@ -1,0 +1,1 @@
+"""The benchmark's Python: the fmpy overhead measurement and the frozen anchors' generator."""

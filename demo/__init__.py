@@ -1,0 +1,1 @@
+"""The demos: the tumbling body, the gimbal lock, and the trajectories they (and the tests) drive."""

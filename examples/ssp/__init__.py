@@ -1,0 +1,1 @@
+"""The SSP systems of the FMUs and their connection graph."""

@@ -1,0 +1,1 @@
+"""The Python scripts of the build, the release and the documentation (run as python -m scripts.NAME)."""
