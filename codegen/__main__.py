@@ -2,6 +2,8 @@
 names the stale files and exits 1 if there are any (CMake at configure time and
 tests/python/test_documentation.py run it with --fast; that test checks the dependency tables
 apart, as a slow test, and tests/python/test_bad_input_table.py the bad-input tables).
+`python -m codegen new-model NAME --like MODEL` adds a model as a copy of another
+(codegen/new_model.py), then writes the generated files.
 
     C, XML, CMake (codegen/generate.py)    variable tables, sequences, log categories, the
                                            modelDescription.xml and buildDescription.xml files
@@ -20,7 +22,8 @@ The stages run in this order, each reading what the ones before wrote."""
 import argparse
 import sys
 
-from codegen import bad_input, docs, documentation, generate, sequence_tables, state_layout
+from codegen import (bad_input, docs, documentation, generate, new_model, sequence_tables,
+                     state_layout)
 from codegen.models import ROOT, all_models
 
 # (name, {path: text} of its files, slow: skipped by --fast, why it cannot run here or None)
@@ -61,7 +64,23 @@ def run(check, fast):
     return stale
 
 
+def new_model_command(argv):
+    """python -m codegen new-model NAME --like MODEL (codegen/new_model.py), then every fast
+    stage regenerated."""
+    parser = argparse.ArgumentParser(prog="python -m codegen new-model",
+                                     description=" ".join(new_model.__doc__.split("\n\n")[0].split()))
+    parser.add_argument("name", metavar="NAME", help="the new model's name (its model identifier)")
+    parser.add_argument("--like", metavar="MODEL", required=True,
+                        help="the model whose folder is copied")
+    args = parser.parse_args(argv)
+    new_model.new_model(args.name, args.like)
+    run(check=False, fast=True)
+
+
 def main():
+    if sys.argv[1:2] == ["new-model"]:
+        new_model_command(sys.argv[2:])
+        return
     summary, details = __doc__.split("\n\n", 1)
     parser = argparse.ArgumentParser(prog="python -m codegen", description=" ".join(summary.split()),
                                      epilog=details,
