@@ -4,9 +4,12 @@
 # (cmake/sanitizers.cmake).
 find_package(Threads REQUIRED)
 
-# ak_add_abuse_tests(<model> <rows file>): the call driver test_fmi2_calls_<Model> (its bad-input
-# table), the many-instance and soak programs and, in a fuzz build, the fuzzer fuzz_fmi2_<Model>.
-function(ak_add_abuse_tests model rows_source)
+# ak_add_abuse_tests(<model>): the call driver test_fmi2_calls_<Model> (its bad-input table: the
+# rows every model has, tests/c/fmi2_bad_input_table.c, and the model's own,
+# fmu_src/models/<Model>/bad_input_rows.c), the many-instance and soak programs and, in a fuzz
+# build, the fuzzer fuzz_fmi2_<Model>.
+function(ak_add_abuse_tests model)
+  set(_rows fmu_src/models/${model}/bad_input_rows.c)
   set(_suffix "_${model}")
   # The FMU's sources, compiled once more as a static library the test programs link.
   add_library(ak_fmu_for_tests_${model} STATIC ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${model}}
@@ -23,11 +26,12 @@ function(ak_add_abuse_tests model rows_source)
     tests/c/fmi2_test_ops.c
     tests/c/fmi2_test_instance.c
     tests/c/fmi2_bad_input_table.c
-    tests/c/${rows_source})
+    ${_rows})
+  target_include_directories(ak_test_master_${model} PUBLIC tests/c)
   target_compile_options(ak_test_master_${model} PRIVATE ${AK_WARNINGS})
   # The rows of the bad-input tables list the fields every row has, in order, and leave the
   # optional ones (fmi2_bad_input_table.h: setup call, second message, ...) zero.
-  set_source_files_properties(tests/c/fmi2_bad_input_table.c tests/c/${rows_source}
+  set_source_files_properties(tests/c/fmi2_bad_input_table.c ${_rows}
                               PROPERTIES COMPILE_OPTIONS -Wno-missing-field-initializers)
   target_link_libraries(ak_test_master_${model} PUBLIC ak_fmu_for_tests_${model}
                                                       kinematics_123_reference)
@@ -56,9 +60,9 @@ function(ak_add_abuse_tests model rows_source)
   add_test(NAME fmi2_soak_short_${model} COMMAND soak_fmi2${_suffix} 100000)
 endfunction()
 
-ak_add_abuse_tests(AngularKinematics fmi2_bad_input_angular_kinematics.c)
-ak_add_abuse_tests(EulerRates fmi2_bad_input_euler_rates.c)
-ak_add_abuse_tests(AttitudePropagator fmi2_bad_input_attitude_propagator.c)
+foreach(_model IN LISTS AK_MODELS)
+  ak_add_abuse_tests(${_model})
+endforeach()
 # Random calls with bad arguments in both interfaces on many threads, for the model with
 # continuous states (tests/c/abuse_attitude.c).
 if(NOT AK_FUZZ)

@@ -5,6 +5,8 @@ apart, as a slow test, tests/python/test_ssp.py the SSP figure,
 tests/python/test_elementary_accuracy.py the coefficients,
 tests/python/test_bad_input_table.py the bad-input tables and tests/python/test_engines.py the
 engine table).
+`python -m codegen new-model NAME --like MODEL` adds a model as a copy of another
+(codegen/new_model.py), then writes the generated files.
 
     C, XML, CMake (codegen/generate.py)    variable tables, sequences, log categories, the
                                            modelDescription.xml and buildDescription.xml files
@@ -32,7 +34,7 @@ import argparse
 import importlib
 import sys
 
-from codegen import docs, documentation, generate, state_layout
+from codegen import docs, documentation, generate, new_model, state_layout
 from codegen.models import ROOT, all_models
 
 
@@ -62,10 +64,11 @@ def is_stale(path, text):
     return not path.is_file() or path.read_text() != text
 
 
-def run(check, fast):
+def run(check, fast, only=None):
+    """Every stage (fast: the fast ones; only: the named ones); the stale files."""
     stale = []
     for name, files, slow, why_not in STAGES:
-        if fast and slow:
+        if (fast and slow) or (only and name not in only):
             continue
         reason = why_not()
         if reason:
@@ -86,7 +89,23 @@ def run(check, fast):
     return stale
 
 
+def new_model_command(argv):
+    """python -m codegen new-model NAME --like MODEL (codegen/new_model.py), then every fast
+    stage regenerated."""
+    parser = argparse.ArgumentParser(prog="python -m codegen new-model",
+                                     description=" ".join(new_model.__doc__.split("\n\n")[0].split()))
+    parser.add_argument("name", metavar="NAME", help="the new model's name (its model identifier)")
+    parser.add_argument("--like", metavar="MODEL", required=True,
+                        help="the model whose folder is copied")
+    args = parser.parse_args(argv)
+    new_model.new_model(args.name, args.like)
+    run(check=False, fast=True)
+
+
 def main():
+    if sys.argv[1:2] == ["new-model"]:
+        new_model_command(sys.argv[2:])
+        return
     summary, details = __doc__.split("\n\n", 1)
     parser = argparse.ArgumentParser(prog="python -m codegen", description=" ".join(summary.split()),
                                      epilog=details,
@@ -98,13 +117,15 @@ def main():
                              "need the build: the dependency tables, the SSP figure, the elementary "
                              "coefficients, the bad-input and engine tables (for CMake's configure "
                              "check)")
+    parser.add_argument("--stage", action="append", choices=[name for name, *_ in STAGES],
+                        help="only this stage (repeatable), e.g. --stage 'bad-input tables'")
     parser.add_argument("--figures", action="store_true",
                         help="first redraw model.png and documentation/tumbling_body.png "
                              "(needs dist/AngularKinematics.fmu)")
     args = parser.parse_args()
     if args.figures and not args.check:
         docs.redraw_figures()
-    stale = run(args.check, args.fast)
+    stale = run(args.check, args.fast, args.stage)
     sys.exit(1 if args.check and stale else 0)
 
 

@@ -15,6 +15,7 @@
     fmu_src/models/<Model>/fmi3/...                the FMI 3.0 files (codegen/fmi3.py)
     docs/fmi3_variables.md                         FMI 2 scalars -> FMI 3 arrays
     tools/fmi3_driver_models.c                     what our FMI 3 master drives each model by
+    tools/fmu_driver_models.c                      what our FMI 2 master drives each model by
 
 The generated files are committed (docs/architecture.md says why); nothing here needs more than
 the Python standard library."""
@@ -374,6 +375,27 @@ def cmake_lists(models):
     return "\n".join(out) + "\n"
 
 
+def fmu_driver_models_c(models):
+    """The table our FMI 2 master (tools/fmu_driver.c) finds each model in: its GUID and
+    variable table, and whether input 1 must stay off a singular value (an output
+    singularity_distance depends on it: EulerRates' theta[2])."""
+    lines = ["/* What tools/fmu_driver.c knows of each model: its GUID, its variable table and",
+             " * whether input 1 must stay off the singular configuration.",
+             f" * {HEADER_NOTE.format(source='fmu_src/models/<Model>/description.py')} */",
+             '#include "fmu_driver_models.h"']
+    lines += [f'#include "{m.name}_variables.h"' for m in models]
+    lines += ["", "const driven_model DRIVEN_MODELS[] = {"]
+    for m in models:
+        p = m.c_prefix
+        singular = any(s.base == "singularity_distance" and 1 in m.input_dependencies(s)
+                       for s in m.by_causality("output"))
+        lines.append(f'    {{"{m.name}", {p}_GUID, {p}_VARIABLES, {p}_N_VALUE_REFERENCES, '
+                     f"{p}_N_INPUTS, {int(singular)}}},")
+    lines += ["};", "",
+              "const size_t N_DRIVEN_MODELS = sizeof DRIVEN_MODELS / sizeof DRIVEN_MODELS[0];", ""]
+    return "\n".join(lines)
+
+
 def outputs():
     """{path: text} of every generated file."""
     models = all_models()
@@ -393,6 +415,7 @@ def outputs():
         files[folder / "buildDescription.xml"] = fmi3.build_description(m, flat_fmi3_sources(m))
         files[folder / f"{m.name}_fmi3_arrays.c"] = fmi3.arrays_c(m)
     files[ROOT / "tools" / "fmi3_driver_models.c"] = fmi3.driver_models_c(models)
+    files[ROOT / "tools" / "fmu_driver_models.c"] = fmu_driver_models_c(models)
     files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(models)
     from codegen import sequence_kernels  # it reads HEADER_NOTE from this module
     files.update(sequence_kernels.outputs())

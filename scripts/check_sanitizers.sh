@@ -85,11 +85,9 @@ else
   suite="tests/python --ignore=tests/python/test_windows_binary.py --ignore=tests/python/test_fmi3_platforms.py
     --ignore=tests/python/test_platforms.py --ignore=tests/python/test_darwin_binaries.py"
 fi
-echo "--- asan+ubsan: pytest through fmpy with build-asan/dist/{AngularKinematics,EulerRates}.fmu"
+echo "--- asan+ubsan: pytest through fmpy with the FMUs of build-asan/dist/ and build-asan/dist/fmi3/"
 # shellcheck disable=SC2086
-AK_FMU="$PWD/build-asan/dist/AngularKinematics.fmu" AK_EULER_FMU="$PWD/build-asan/dist/EulerRates.fmu" \
-  AK_FMU3_DIR="$PWD/build-asan/dist/fmi3" \
-  AK_ATTITUDE_FMU="$PWD/build-asan/dist/AttitudePropagator.fmu" \
+AK_FMU_DIR="$PWD/build-asan/dist" AK_FMU3_DIR="$PWD/build-asan/dist/fmi3" \
   LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)" \
   ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 .venv/bin/python -m pytest -n logical $suite -q -p no:cacheprovider \
     --basetemp=build-asan/pytest-tmp \

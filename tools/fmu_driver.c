@@ -13,8 +13,9 @@
  *
  * Output: "fmi2GetVersion 2.0", "outputs NAME...", then per step "k y1 y2 ...".
  *
- * Usage: fmu_driver LIBRARY [STEPS [MODEL]]   MODEL: AngularKinematics (default), EulerRates,
- * AttitudePropagator; exit status 0 when every call returned fmi2OK.
+ * Usage: fmu_driver LIBRARY [STEPS [MODEL]]   MODEL: a model of the project (default
+ * AngularKinematics; the table is fmu_driver_models.c); exit status 0 when every call returned
+ * fmi2OK.
  *
  * Built with AK_DRIVER_LINKED, the driver has one model's FMI functions linked in instead of
  * loading a library (LIBRARY is ignored; MODEL must be that model, or fmi2Instantiate refuses the
@@ -26,9 +27,7 @@
 #include <string.h>
 
 #include "fmi2FunctionTypes.h"
-#include "AngularKinematics_variables.h"
-#include "AttitudePropagator_variables.h"
-#include "EulerRates_variables.h"
+#include "fmu_driver_models.h"
 
 #if defined(AK_DRIVER_LINKED)
 #include "fmi2Functions.h"
@@ -39,21 +38,6 @@
 #endif
 
 typedef void (*generic_function)(void);
-
-/* What the driver knows of a model: its GUID and its generated variable table. */
-typedef struct {
-    const char *name;
-    const char *guid;
-    const ak_variable *variables; /* indexed by value reference; name NULL: a hole */
-    int n_value_references;
-    int n_inputs;
-} driven_model;
-
-static const driven_model MODELS[] = {
-    {"AngularKinematics", KIN_GUID, KIN_VARIABLES, KIN_N_VALUE_REFERENCES, KIN_N_INPUTS},
-    {"EulerRates", ER_GUID, ER_VARIABLES, ER_N_VALUE_REFERENCES, ER_N_INPUTS},
-    {"AttitudePropagator", AP_GUID, AP_VARIABLES, AP_N_VALUE_REFERENCES, AP_N_INPUTS},
-};
 
 typedef struct {
     fmi2GetVersionTYPE *get_version;
@@ -154,33 +138,36 @@ static void *allocate(size_t count, size_t size) { return calloc(count, size); }
 
 /* Input j at step k: an exact multiple of 1/64 between -2.5 and +2.5 (rad, rad/s, rad/s2); every
  * 17th step puts input 1 at +-pi/2 rounded to a double (the same on both sides): AngularKinematics'
- * theta[2] at gimbal lock; for EulerRates, whose inverse map is undefined there, +-1.5 (near it);
- * AttitudePropagator's omega[2], a rate like any other. */
-static double input_value(int k, int j, int inverse) {
+ * theta[2] at gimbal lock; for a model whose step is refused there (singular_input_1: EulerRates'
+ * inverse map), +-1.5 (near it); AttitudePropagator's omega[2], a rate like any other. */
+static double input_value(int k, int j, int singular_input_1) {
     if (j == 1 && k % 17 == 0) {
-        return (k % 34 == 0 ? 1.0 : -1.0) * (inverse ? 1.5 : 1.5707963267948966);
+        return (k % 34 == 0 ? 1.0 : -1.0) * (singular_input_1 ? 1.5 : 1.5707963267948966);
     }
     return (double)((k * 37 + j * 101 + (k * j) % 23) % 321 - 160) / 64.0;
 }
 
 int main(int argc, char **argv) {
     if (argc < 2) {
-        fprintf(stderr, "usage: %s LIBRARY [STEPS [AngularKinematics|EulerRates|AttitudePropagator]]\n",
-                argv[0]);
+        fprintf(stderr, "usage: %s LIBRARY [STEPS [MODEL]]   MODEL: one of", argv[0]);
+        for (size_t m = 0; m < N_DRIVEN_MODELS; m++) {
+            fprintf(stderr, " %s", DRIVEN_MODELS[m].name);
+        }
+        fprintf(stderr, "\n");
         return 2;
     }
     const int steps = argc > 2 ? atoi(argv[2]) : 200;
     const driven_model *model = NULL;
-    for (size_t m = 0; m < sizeof MODELS / sizeof MODELS[0]; m++) {
-        if (strcmp(argc > 3 ? argv[3] : "AngularKinematics", MODELS[m].name) == 0) {
-            model = &MODELS[m];
+    for (size_t m = 0; m < N_DRIVEN_MODELS; m++) {
+        if (strcmp(argc > 3 ? argv[3] : "AngularKinematics", DRIVEN_MODELS[m].name) == 0) {
+            model = &DRIVEN_MODELS[m];
         }
     }
     if (model == NULL) {
         fprintf(stderr, "fmu_driver: no model %s\n", argv[3]);
         return 2;
     }
-    const int inverse = strcmp(model->name, "EulerRates") == 0;
+    const int singular_input_1 = model->singular_input_1;
     const char *guid = model->guid;
     void *library = open_library(argv[1]);
     if (library == NULL) {
@@ -224,7 +211,7 @@ int main(int argc, char **argv) {
     for (int k = 0; k < steps && !failed; k++) {
         double u[AK_MAX_INPUTS], y[AK_MAX_VARIABLES];
         for (size_t j = 0; j < n_inputs; j++) {
-            u[j] = input_value(k, (int)j, inverse);
+            u[j] = input_value(k, (int)j, singular_input_1);
         }
         failed = api.set_real(instance, inputs, n_inputs, u) != fmi2OK ||
                  api.get_real(instance, outputs, n_outputs, y) != fmi2OK;

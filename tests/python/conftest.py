@@ -34,10 +34,9 @@ def sequence_cases():
             for name in project.SEQUENCES]
 
 
-# AK_FMU, AK_EULER_FMU, AK_ATTITUDE_FMU: other builds of the FMUs to test
-# (scripts/check_sanitizers.sh passes its ASan builds); any other model is tested as dist/<Model>.fmu.
-FMU_ENVIRONMENT = {"AngularKinematics": "AK_FMU", "EulerRates": "AK_EULER_FMU",
-                   "AttitudePropagator": "AK_ATTITUDE_FMU"}
+# AK_FMU_DIR: another build's folder of the FMI 2 FMUs to test, <Model>.fmu each
+# (scripts/check_sanitizers.sh passes its ASan build's); dist/ by default.
+FMU_DIR = pathlib.Path(os.environ.get("AK_FMU_DIR", ROOT / "dist"))
 
 
 def description_path_of(model):
@@ -63,8 +62,7 @@ def fmu_state_size(model):
 
 
 def fmu_path_of(model):
-    default = ROOT / "dist" / f"{model}.fmu"
-    return pathlib.Path(os.environ.get(FMU_ENVIRONMENT.get(model, ""), default))
+    return FMU_DIR / f"{model}.fmu"
 
 
 FMU_PATH = fmu_path_of("AngularKinematics")
@@ -142,9 +140,10 @@ def abuse_program(program, model):
 
 @functools.lru_cache(maxsize=None)
 def bad_input_rows(model):
-    """The bad-input table of the C code (tests/c/fmi2_bad_input_*.c), the one authority for
-    every bad-input message, as its driver proved and printed it: one dict per row with state,
-    call, status and message (None: nothing logged)."""
+    """The bad-input table of the C code (tests/c/fmi2_bad_input_table.c and the model's
+    fmu_src/models/<Model>/bad_input_rows.c), the one authority for every bad-input message, as
+    its driver proved and printed it: one dict per row with state, call, status and message
+    (None: nothing logged)."""
     driver = abuse_program("test_fmi2_calls", model)
     assert driver.is_file(), f"{driver} is missing: build it first (bash scripts/build.sh)"
     run = subprocess.run([str(driver), "--table"], capture_output=True, text=True)
