@@ -5,9 +5,15 @@
 # binary), and a Python virtual environment .venv with the pinned packages of requirements.txt,
 # among them zig (ziglang) for the macOS binaries and the proof builds (docs/platforms.md), and the
 # project's own packages (pyproject.toml) installed editable.
+#   bash scripts/setup.sh [--with-wine]
+#   bash scripts/setup.sh --demo    only what scripts/demo.sh needs: the native C toolchain, CMake
+#                                   and make, and in .venv the pinned packages of
+#                                   requirements-demo.txt (a later run without --demo adds the rest)
 # Idempotent: a second run installs nothing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+demo=
+[ "${1:-}" = --demo ] && demo=1
 
 # apt quietly (its output goes to a log, printed only on failure), waiting up to 10 minutes for a
 # lock another apt holds instead of failing at once.
@@ -28,21 +34,25 @@ apt_install() {
 
 missing=()
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)
+# CMake's default generator; Debian's cmake only recommends make, which --no-install-recommends skips.
+command -v make >/dev/null 2>&1 || missing+=(make)
 command -v cc >/dev/null 2>&1 || missing+=(gcc libc6-dev)
 command -v python3 >/dev/null 2>&1 || missing+=(python3)
-# The Windows binary is cross-compiled with mingw-w64; the tests run it under wine (--with-wine).
-command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-x86-64-win32)
-# The 32-bit Windows binary: mingw-w64 for i686 (the macOS ones: zig, from requirements.txt).
-command -v i686-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-i686-win32)
-# The aarch64-linux FMI 3 binaries are cross-compiled with Debian's gcc and run under qemu-user.
-command -v aarch64-linux-gnu-gcc >/dev/null 2>&1 || missing+=(gcc-aarch64-linux-gnu)
-[ -f /usr/aarch64-linux-gnu/lib/libc.so.6 ] || missing+=(libc6-dev-arm64-cross)
-command -v qemu-aarch64 >/dev/null 2>&1 || missing+=(qemu-user)
-# ccache: the build folders compile the same sources; a second run recompiles nothing unchanged.
-command -v ccache >/dev/null 2>&1 || missing+=(ccache)
-if [ "${1:-}" = "--with-wine" ]; then
-  command -v wine64 >/dev/null 2>&1 || command -v wine >/dev/null 2>&1 ||
-    [ -x /usr/lib/wine/wine64 ] || missing+=(wine64)
+if [ -z "$demo" ]; then # the cross compilers and ccache: the six-platform build and the tests
+  # The Windows binary is cross-compiled with mingw-w64; the tests run it under wine (--with-wine).
+  command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-x86-64-win32)
+  # The 32-bit Windows binary: mingw-w64 for i686 (the macOS ones: zig, from requirements.txt).
+  command -v i686-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-i686-win32)
+  # The aarch64-linux FMI 3 binaries are cross-compiled with Debian's gcc and run under qemu-user.
+  command -v aarch64-linux-gnu-gcc >/dev/null 2>&1 || missing+=(gcc-aarch64-linux-gnu)
+  [ -f /usr/aarch64-linux-gnu/lib/libc.so.6 ] || missing+=(libc6-dev-arm64-cross)
+  command -v qemu-aarch64 >/dev/null 2>&1 || missing+=(qemu-user)
+  # ccache: the build folders compile the same sources; a second run recompiles nothing unchanged.
+  command -v ccache >/dev/null 2>&1 || missing+=(ccache)
+  if [ "${1:-}" = "--with-wine" ]; then
+    command -v wine64 >/dev/null 2>&1 || command -v wine >/dev/null 2>&1 ||
+      [ -x /usr/lib/wine/wine64 ] || missing+=(wine64)
+  fi
 fi
 if [ ${#missing[@]} -gt 0 ]; then
   apt_install "${missing[@]}"
@@ -57,7 +67,20 @@ if [ ! -x .venv/bin/python ]; then
     python3 -m venv .venv
   fi
 fi
-if [ ! -f "$stamp" ] || ! cmp -s requirements.txt "$stamp"; then
+if [ -n "$demo" ]; then
+  demo_stamp=.venv/.requirements-demo-installed
+  # The full set (requirements.txt) holds the demo's too.
+  if ! cmp -s requirements.txt "$stamp" && ! cmp -s requirements-demo.txt "$demo_stamp"; then
+    # --no-deps: exactly the listed pins, which name every dependency but FMPy's cmake wheel
+    # (requirements-demo.txt); --no-compile: Python compiles what the demo imports when it does,
+    # a few seconds less than compiling every module of the packages first.
+    .venv/bin/python -m pip install --quiet --disable-pip-version-check --no-deps --no-compile \
+      -r requirements-demo.txt
+    cp requirements-demo.txt "$demo_stamp"
+  fi
+  exit 0 # the demo runs its modules with python -m from the checkout: no editable install needed
+fi
+if ! cmp -s requirements.txt "$stamp"; then
   .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
   cp requirements.txt "$stamp"
 fi

@@ -1,14 +1,23 @@
-"""The demo (CSV, plot, progress bar) and the examples: the CI simulation check and a bounded Dask
-sweep, each shown to pass and shown to fail when it should."""
+"""The demo (CSV, plot, progress bar; what scripts/demo.sh installs and builds, and the script run
+in a scratch copy) and the examples: the CI simulation check and a bounded Dask sweep, each shown
+to pass and shown to fail when it should."""
 import csv
+import importlib.metadata
+import json
 import pathlib
+import re
+import shutil
 import subprocess
 import sys
+import zipfile
 
 import numpy as np
 import pytest
+from packaging.requirements import Requirement
+from packaging.utils import canonicalize_name
 
 from codegen import reference
+from conftest import project
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 PYTHON = sys.executable
@@ -46,6 +55,91 @@ def test_demo_shows_progress_on_runs_past_the_delay(fmu_path, capsys, monkeypatc
     monkeypatch.setattr(tumbling_body, "PROGRESS_DELAY", 60.0)
     tumbling_body.simulate(fmu_path, 1.0, 0.01)
     assert capsys.readouterr().err == ""
+
+
+def pins(path):
+    """{canonical name: version} of a requirements file of name==version lines."""
+    found = {}
+    for line in path.read_text().splitlines():
+        line = line.split("#")[0].strip()
+        if line:
+            name, _, version = line.partition("==")
+            assert version, f"{path.name}: {line} is not pinned"
+            found[canonicalize_name(name)] = version
+    return found
+
+
+def test_demo_requirements_are_pinned_as_in_requirements_txt():
+    demo, full = pins(ROOT / "requirements-demo.txt"), pins(ROOT / "requirements.txt")
+    assert {"fmpy", "numpy", "matplotlib", "tqdm", "markdown"} <= demo.keys()
+    assert {name: version for name, version in demo.items() if full.get(name) != version} == {}
+
+
+def test_demo_requirements_hold_every_dependency_but_fmpys_cmake():
+    """scripts/setup.sh --demo installs requirements-demo.txt with --no-deps: it must name every
+    package its packages need (read from the installed ones, which requirements.txt pins alike),
+    leaving out only the cmake wheel that FMPy declares for compiling source FMUs."""
+    demo = pins(ROOT / "requirements-demo.txt")
+    needed = set()
+    for name, version in demo.items():
+        distribution = importlib.metadata.distribution(name)
+        assert distribution.version == version, name
+        for requirement in map(Requirement, distribution.requires or []):
+            if requirement.marker is None or requirement.marker.evaluate({"extra": ""}):
+                needed.add(canonicalize_name(requirement.name))
+    assert needed - demo.keys() == {"cmake"}
+
+
+def demo_script():
+    """(preset, build folder, target, FMU) of scripts/demo.sh."""
+    text = (ROOT / "scripts" / "demo.sh").read_text()
+    preset = re.search(r"^bash scripts/configure\.sh (\S+)$", text, re.M).group(1)
+    folder, target = re.search(r"^cmake --build (\S+) .*--target (\S+)$", text, re.M).groups()
+    fmu = re.search(r"^fmu=(\S+)$", text, re.M).group(1)
+    return preset, folder, target, fmu
+
+
+def test_demo_builds_only_the_fmu_it_simulates_outside_dist():
+    preset, folder, target, fmu = demo_script()
+    presets = json.loads((ROOT / "CMakePresets.json").read_text())["configurePresets"]
+    variables = next(p for p in presets if p["name"] == preset)["cacheVariables"]
+    model = pathlib.Path(fmu).stem
+    # The model of demo/tumbling_body.py's default FMU, packaged by its own target.
+    assert model == "AngularKinematics" and model in project.MODELS
+    assert target == f"fmu_{model}"
+    assert next(p for p in presets if p["name"] == preset)["binaryDir"] == f"${{sourceDir}}/{folder}"
+    assert variables["AK_DIST_DIR"] == f"${{sourceDir}}/{pathlib.Path(fmu).parent}"
+    assert not fmu.startswith("dist/")  # dist/ holds the six-platform FMUs the tests check
+    commands = [line.strip() for line in (ROOT / "scripts" / "demo.sh").read_text().splitlines()
+                if line.strip() and not line.lstrip().startswith("#")]
+    assert "bash scripts/setup.sh --demo" in commands
+    assert not [line for line in commands if line.startswith("bash scripts/build.sh")]
+
+
+@pytest.mark.slow  # configures and builds an FMU (about 20 s on 2 cores)
+def test_demo_script_in_a_scratch_copy(tmp_path):
+    """bash scripts/demo.sh in a copy of the checkout (its tracked and new files) with this .venv:
+    it installs nothing more, builds the one-platform FMU outside dist/ and simulates it."""
+    listed = subprocess.run(["git", "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+                            cwd=ROOT, check=True, capture_output=True, text=True).stdout
+    scratch = tmp_path / "checkout"
+    for name in filter(None, listed.split("\0")):
+        if (ROOT / name).is_file():
+            (scratch / name).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(ROOT / name, scratch / name)
+    (scratch / ".venv").symlink_to(pathlib.Path(sys.prefix).resolve())
+    done = subprocess.run(["bash", "scripts/demo.sh", "--stop-time", "1", "--no-progress"],
+                          cwd=scratch, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+    _, _, _, fmu = demo_script()
+    assert f"demo: built {fmu} (FMI 2.0, x86_64-linux binary only;" in done.stdout
+    assert "simulated 100 steps of 0.01 s to t = 1 s" in done.stdout
+    with zipfile.ZipFile(scratch / fmu) as archive:
+        binaries = {name for name in archive.namelist()
+                    if name.startswith("binaries/") and not name.endswith("/")}
+    assert binaries == {"binaries/linux64/AngularKinematics.so"}
+    assert not list((scratch / "dist").glob("**/*.fmu"))
+    assert (scratch / "results" / "tumbling_body.png").is_file()
 
 
 def test_stored_reference_agrees_with_the_sympy_reference(report):
