@@ -347,17 +347,17 @@ int main(int argc, char **argv) {
     if (pass) {
         const double pt2 = ak_bench_median(ns[PT2], repeats);
         const double pt3_one = ak_bench_median(ns[PT3_ONE_SET], repeats);
-        const double floor = ak_bench_median(floor2, repeats);
+        const double floor_ratio = ak_bench_median(floor2, repeats);
         const double pt_fmi3 = ak_bench_median(fmi3_to_fmi2[4], repeats);
         printf("Beside, the pass-through FMU: FMI 2 cycle %.1f ns, (pass-through + anchor) / anchor "
                "%.3f against the FMI 2 cycle's %.3f;\npass-through FMI 3 / FMI 2 %.3f (3 sets "
                "of 3: %.3f) against the model's %.3f (%.3f).\n",
-               pt2, floor, ak_bench_median(ratio[FMI2], repeats), pt_fmi3,
+               pt2, floor_ratio, ak_bench_median(ratio[FMI2], repeats), pt_fmi3,
                ak_bench_median(fmi3_to_fmi2[3], repeats),
                ak_bench_median(fmi3_to_fmi2[2], repeats), ak_bench_median(fmi3_to_fmi2[0], repeats));
         if (strcmp(model, "AngularKinematics") == 0) {
             ak_bench_record_figure("ak-fmi2", ak_bench_kind_name(kind),
-                                   ak_bench_median(ratio[FMI2], repeats), floor, pt2);
+                                   ak_bench_median(ratio[FMI2], repeats), floor_ratio, pt2);
             ak_bench_record_figure("ak-fmi3", ak_bench_kind_name(kind),
                                    ak_bench_median(fmi3_to_fmi2[2], repeats), pt_fmi3, pt3_one);
         }

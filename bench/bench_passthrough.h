@@ -3,7 +3,9 @@
  * build/passthrough/PassThrough.so (FMI 2, bench/passthrough/passthrough.c) and PassThrough3.so
  * (FMI 3, passthrough3.c), which copy inputs to outputs. What an importer pays for the calls of
  * any FMU of the interface: the cycle of the model minus the pass-through's is what the model
- * adds to its arithmetic. Needs _POSIX_C_SOURCE 200809L, bench_inputs.h and bench_timing.h. */
+ * adds to its arithmetic. The timed loops are never inlined, so that the drivers' own loops
+ * compile as they did without them (the guard's counts). Needs _POSIX_C_SOURCE 200809L,
+ * bench_inputs.h and bench_timing.h. */
 #ifndef ANGULAR_KINEMATICS_BENCH_PASSTHROUGH_H
 #define ANGULAR_KINEMATICS_BENCH_PASSTHROUGH_H
 
@@ -87,7 +89,7 @@ static volatile double ak_passthrough_sink;
 /* n FMI 2 cycles on a fresh instance: fmi2SetReal of n_inputs inputs (value references 0..),
  * the values from rows (AK_BENCH_ROWS rows of row_length, cycled), fmi2DoStep of h, fmi2GetReal
  * of n_outputs outputs (value references 9..). ns per cycle. */
-static inline double ak_passthrough2_cycle(const ak_passthrough2 *p, const double *rows,
+__attribute__((noinline, unused)) static double ak_passthrough2_cycle(const ak_passthrough2 *p, const double *rows,
                                            int row_length, int n_inputs, int n_outputs, double h,
                                            long n) {
     static const fmi2ValueReference vrs[21] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10,
@@ -123,7 +125,7 @@ static inline double ak_passthrough2_cycle(const ak_passthrough2 *p, const doubl
 /* n FMI 3 cycles on a fresh instance: n_sets calls of fmi3SetFloat64, set k of the input arrays
  * in_vrs[k * in_per_set ...] (arrays of 3 values each, from rows as above), fmi3DoStep of h, one
  * fmi3GetFloat64 of the n_out arrays out_vrs (n_out_values values). ns per cycle. */
-static inline double ak_passthrough3_cycle(const ak_passthrough3 *p, const double *rows,
+__attribute__((noinline, unused)) static double ak_passthrough3_cycle(const ak_passthrough3 *p, const double *rows,
                                            int row_length, const fmi3ValueReference *in_vrs,
                                            int n_sets, int in_per_set,
                                            const fmi3ValueReference *out_vrs, int n_out,
