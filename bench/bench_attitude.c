@@ -56,9 +56,10 @@
 
 enum { TABLE_ROWS = AK_BENCH_ROWS };
 static const double STEP_SIZE = 1e-3;
-/* --inputs smooth steps by AK_BENCH_SMOOTH_STEP. The timed loops take the step as an argument
- * and are inlined with it constant (AK_WITH_STEP), so that the default loops, which the guard's
- * counts were recorded with, stay instruction for instruction as they were. */
+/* --inputs smooth steps by AK_BENCH_SMOOTH_STEP. The FMU loops take the step as an argument and
+ * are inlined with it constant (AK_WITH_STEP), the anchor loops have a copy each with the anchors'
+ * copy of attitude_anchor_smooth.c, so that the default loops, which the recorded counts were
+ * taken with, stay instruction for instruction as they were. */
 static bool smooth_steps = false;
 #define AK_INLINE static inline __attribute__((always_inline))
 #define AK_WITH_STEP(call_with_h) \
@@ -252,11 +253,11 @@ static void check_anchors(void) {
 }
 
 /* The bare update over n steps: ns per step; q_out receives the final q. */
-AK_INLINE double time_bare_h(long n, double q_out[4], double h) {
+static double time_bare(long n, double q_out[4]) {
     double q[4] = {1.0, 0.0, 0.0, 0.0};
     const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
-        ak_anchor_attitude_step(table[step & (TABLE_ROWS - 1)], h, q);
+        ak_anchor_attitude_step(table[step & (TABLE_ROWS - 1)], STEP_SIZE, q);
         sink = q[step & 3];
     }
     const double elapsed = ak_bench_now_ns() - start;
@@ -265,13 +266,45 @@ AK_INLINE double time_bare_h(long n, double q_out[4], double h) {
 }
 
 /* The bare update and the angles of body123 from it (what reading theta needs): ns per step. */
-AK_INLINE double time_bare_with_angles_h(long n, double h) {
+static double time_bare_with_angles(long n) {
     double q[4] = {1.0, 0.0, 0.0, 0.0}, theta[3] = {0.0, 0.0, 0.0}, R[3][3], distance;
     const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
-        ak_anchor_attitude_step(table[step & (TABLE_ROWS - 1)], h, q);
+        ak_anchor_attitude_step(table[step & (TABLE_ROWS - 1)], STEP_SIZE, q);
         ak_anchor_quat_to_matrix(q, R);
         ak_anchor_angles_123(R, theta, theta, &distance);
+        sink = theta[step % 3];
+    }
+    return (ak_bench_now_ns() - start) / (double)n;
+}
+
+/* The same two anchor loops for --inputs smooth: steps of AK_BENCH_SMOOTH_STEP, through the copy
+ * of the anchors in attitude_anchor_smooth.c (the same frozen source, specialized for this step
+ * as the default loops' copy is for theirs). */
+bool ak_anchor_smooth_attitude_step(const double omega[3], double h, double q[4]);
+void ak_anchor_smooth_quat_to_matrix(const double q[4], double R[3][3]);
+bool ak_anchor_smooth_angles_123(double R[3][3], const double previous[3], double theta[3],
+                                 double *distance);
+
+static double time_bare_smooth(long n, double q_out[4]) {
+    double q[4] = {1.0, 0.0, 0.0, 0.0};
+    const double start = ak_bench_now_ns();
+    for (long step = 0; step < n; step++) {
+        ak_anchor_smooth_attitude_step(table[step & (TABLE_ROWS - 1)], AK_BENCH_SMOOTH_STEP, q);
+        sink = q[step & 3];
+    }
+    const double elapsed = ak_bench_now_ns() - start;
+    memcpy(q_out, q, sizeof q);
+    return elapsed / (double)n;
+}
+
+static double time_bare_with_angles_smooth(long n) {
+    double q[4] = {1.0, 0.0, 0.0, 0.0}, theta[3] = {0.0, 0.0, 0.0}, R[3][3], distance;
+    const double start = ak_bench_now_ns();
+    for (long step = 0; step < n; step++) {
+        ak_anchor_smooth_attitude_step(table[step & (TABLE_ROWS - 1)], AK_BENCH_SMOOTH_STEP, q);
+        ak_anchor_smooth_quat_to_matrix(q, R);
+        ak_anchor_smooth_angles_123(R, theta, theta, &distance);
         sink = theta[step % 3];
     }
     return (ak_bench_now_ns() - start) / (double)n;
@@ -343,18 +376,6 @@ AK_INLINE double time_fmu3_h(const fmu3_api *api, long n, bool with_theta, doubl
     return elapsed / (double)n;
 }
 
-static double time_bare(long n, double q_out[4]) {
-#define CALL(h) time_bare_h(n, q_out, h)
-    return AK_WITH_STEP(CALL);
-#undef CALL
-}
-
-static double time_bare_with_angles(long n) {
-#define CALL(h) time_bare_with_angles_h(n, h)
-    return AK_WITH_STEP(CALL);
-#undef CALL
-}
-
 static double time_fmu(const fmu_api *api, long n, int n_read, double q_out[4]) {
 #define CALL(h) time_fmu_h(api, n, n_read, q_out, h)
     return AK_WITH_STEP(CALL);
@@ -410,8 +431,8 @@ static bool is_passthrough(int loop) {
 /* One run of loop `loop`: ns per step; q_out receives the final q (not for ANGLES). */
 static double run_loop(int loop, const binaries *b, long steps, double q_out[4]) {
     switch (loop) {
-    case BARE: return time_bare(steps, q_out);
-    case ANGLES: return time_bare_with_angles(steps);
+    case BARE: return smooth_steps ? time_bare_smooth(steps, q_out) : time_bare(steps, q_out);
+    case ANGLES: return smooth_steps ? time_bare_with_angles_smooth(steps) : time_bare_with_angles(steps);
     case FMU_Q: case FMU_THETA: case PREV_Q: case PREV_THETA:
         return time_fmu(&b->fmi2[loop >= PREV_Q], steps, reads_theta(loop) ? 7 : 4, q_out);
     case PT_Q: case PT_THETA:

@@ -94,8 +94,9 @@ static void fmi2_log(fmi2ComponentEnvironment e, fmi2String n, fmi2Status s, fmi
     fprintf(stderr, "FMI 2: %s\n", m);
 }
 
-/* Inlined into run_loop, as it was before the pass-through loops came: the guard's counts were
- * recorded with that code. */
+/* This loop and time_fmi3_one_set are inlined into run_loop, as they were before the
+ * pass-through loops came: the recorded counts (bench/guard.sh, docs/performance.md) were taken
+ * with that code. */
 __attribute__((always_inline)) static inline double time_fmi2(void *library, long n) {
     fmi2CallbackFunctions callbacks = {fmi2_log, calloc, free, NULL, NULL};
     fmi2Component c = FUNCTION(fmi2InstantiateTYPE, library, "fmi2Instantiate")(
@@ -170,7 +171,7 @@ static double time_fmi3(void *library, long n) {
 
 /* The same cycle with the three input arrays in one fmi3SetFloat64, as issue 24 states it (a loop
  * of its own, so that time_fmi3's, which the guard's record was taken with, stays as it was). */
-static double time_fmi3_one_set(void *library, long n) {
+__attribute__((always_inline)) static inline double time_fmi3_one_set(void *library, long n) {
     fmi3Instance c = FUNCTION(fmi3InstantiateCoSimulationTYPE, library, "fmi3InstantiateCoSimulation")(
         "bench", guid, NULL, fmi3False, fmi3False, fmi3False, fmi3False, NULL, 0, NULL, fmi3_log, NULL);
     fmi3SetFloat64TYPE *set = FUNCTION(fmi3SetFloat64TYPE, library, "fmi3SetFloat64");
