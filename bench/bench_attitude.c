@@ -286,6 +286,22 @@ void ak_anchor_smooth_quat_to_matrix(const double q[4], double R[3][3]);
 bool ak_anchor_smooth_angles_123(double R[3][3], const double previous[3], double theta[3],
                                  double *distance);
 
+/* The smooth copy against the core over the 256 smooth rows, step by step (at most ANCHOR_ULPS
+ * apart, as check_anchors for the default copy). */
+static void check_smooth_anchor(void) {
+    double q_anchor[4] = {1.0, 0.0, 0.0, 0.0}, q_core[4] = {1.0, 0.0, 0.0, 0.0};
+    for (int step = 0; step < TABLE_ROWS; step++) {
+        const double *w = table[step];
+        double c[4][3] = {{w[0], w[1], w[2]}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+        ak_anchor_smooth_attitude_step(w, AK_BENCH_SMOOTH_STEP, q_anchor);
+        ak_attitude_step(AK_FRAME_BODY, c, AK_BENCH_SMOOTH_STEP, q_core, NULL);
+        if (worst_apart(q_anchor, q_core, 4) > ANCHOR_ULPS) {
+            fail("the smooth copy of the anchors and the core's step differ");
+        }
+        memcpy(q_anchor, q_core, sizeof q_core);
+    }
+}
+
 static double time_bare_smooth(long n, double q_out[4]) {
     double q[4] = {1.0, 0.0, 0.0, 0.0};
     const double start = ak_bench_now_ns();
@@ -525,6 +541,9 @@ int main(int argc, char **argv) {
             }
         }
         smooth_steps = kind == AK_BENCH_SMOOTH;
+        if (smooth_steps) {
+            check_smooth_anchor();
+        }
     }
     const char *kind_name = inputs == NULL ? "default" : ak_bench_kind_name(kind);
     static binaries b; /* zeroed: a NULL library is a binary not given */
