@@ -17,10 +17,21 @@
  * or a non-OK status, exits with status 1.
  *
  * With --fmi3, the same loops through the FMI 3 binary: one fmi3SetFloat64 of the array omega,
- * fmi3DoStep, one fmi3GetFloat64 of q (and theta); --previous3 the previous release's.
+ * fmi3DoStep, one fmi3GetFloat64 of q (and theta); --previous3 the previous release's. With
+ * --passthrough SO and --passthrough3 SO, the same four loops through the pass-through FMUs
+ * (bench_passthrough.h: 3 inputs, 4 or 7 outputs, the same calls), what the calls cost with no
+ * model behind them.
+ *
+ * The rows of omega (--inputs): without the option, the 256 rows the guard's counts were
+ * recorded with (omega = (sin 0.1 r, 0.5 cos 0.07 r, 0.3 + 0.2 sin 0.13 r), steps of 1e-3 s);
+ * random: the rate columns of bench_inputs.h's random rows (omega anywhere in [-10, 10] rad/s at
+ * every step, steps of 1e-3 s); smooth: omega_body of bench_inputs.h's tumbling body (the
+ * hand-written 1-2-3 formula on its smooth rows), steps of 0.01 s, so that the FMU follows the
+ * body's attitude. Whatever omega does, the attitude, a state, moves a little at each step.
  *
  *     bench_attitude PATH/AttitudePropagator.so [--steps N] [--repeats R] [--previous SO]
- *                    [--fmi3 SO] [--previous3 SO] [--only bare|angles|q|q+theta|q3|q+theta3]
+ *                    [--fmi3 SO] [--previous3 SO] [--passthrough SO --passthrough3 SO]
+ *                    [--inputs random|smooth] [--only bare|angles|q|q+theta|q3|q+theta3]
  * --only runs one loop once (bench/run.sh and bench/guard.sh count its instructions). */
 #define _POSIX_C_SOURCE 200809L
 
@@ -34,14 +45,29 @@
 #include <time.h>
 
 #include "bench_timing.h"
+#include "bench_inputs.h"
+#include "bench_passthrough.h"
+#include "kinematics_123.h"
 #include "AttitudePropagator_variables.h"
 #include "attitude.h"
 #include "attitude_anchor.h"
 #include "fmi2FunctionTypes.h"
 #include "fmi3FunctionTypes.h"
 
-enum { TABLE_ROWS = 256 };
+enum { TABLE_ROWS = AK_BENCH_ROWS };
 static const double STEP_SIZE = 1e-3;
+/* --inputs smooth steps by AK_BENCH_SMOOTH_STEP. The FMU loops take the step as an argument and
+ * are inlined with it constant (AK_WITH_STEP), the anchor loops have a copy each with the anchors'
+ * copy of attitude_anchor_smooth.c, so that the default loops, which the recorded counts were
+ * taken with, stay instruction for instruction as they were. */
+static bool smooth_steps = false;
+#define AK_INLINE static inline __attribute__((always_inline))
+#define AK_WITH_STEP(call_with_h) \
+    (smooth_steps ? call_with_h(AK_BENCH_SMOOTH_STEP) : call_with_h(STEP_SIZE))
+
+static double step_size(void) {
+    return smooth_steps ? AK_BENCH_SMOOTH_STEP : STEP_SIZE;
+}
 static const fmi2ValueReference OMEGA_VRS[3] = {AP_VR_OMEGA, AP_VR_OMEGA + 1, AP_VR_OMEGA + 2};
 static const fmi2ValueReference READ_VRS[7] = {AP_VR_Q,     AP_VR_Q + 1,     AP_VR_Q + 2,
                                                AP_VR_Q + 3, AP_VR_THETA,     AP_VR_THETA + 1,
@@ -169,7 +195,7 @@ static void core_steps(long n, double q[4]) {
     for (long step = 0; step < n; step++) {
         const double *w = table[step & (TABLE_ROWS - 1)];
         double c[4][3] = {{w[0], w[1], w[2]}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-        ak_attitude_step(AK_FRAME_BODY, c, STEP_SIZE, q, NULL);
+        ak_attitude_step(AK_FRAME_BODY, c, step_size(), q, NULL);
     }
 }
 
@@ -252,9 +278,57 @@ static double time_bare_with_angles(long n) {
     return (ak_bench_now_ns() - start) / (double)n;
 }
 
+/* The same two anchor loops for --inputs smooth: steps of AK_BENCH_SMOOTH_STEP, through the copy
+ * of the anchors in attitude_anchor_smooth.c (the same frozen source, specialized for this step
+ * as the default loops' copy is for theirs). */
+bool ak_anchor_smooth_attitude_step(const double omega[3], double h, double q[4]);
+void ak_anchor_smooth_quat_to_matrix(const double q[4], double R[3][3]);
+bool ak_anchor_smooth_angles_123(double R[3][3], const double previous[3], double theta[3],
+                                 double *distance);
+
+/* The smooth copy against the core over the 256 smooth rows, step by step (at most ANCHOR_ULPS
+ * apart, as check_anchors for the default copy). */
+static void check_smooth_anchor(void) {
+    double q_anchor[4] = {1.0, 0.0, 0.0, 0.0}, q_core[4] = {1.0, 0.0, 0.0, 0.0};
+    for (int step = 0; step < TABLE_ROWS; step++) {
+        const double *w = table[step];
+        double c[4][3] = {{w[0], w[1], w[2]}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+        ak_anchor_smooth_attitude_step(w, AK_BENCH_SMOOTH_STEP, q_anchor);
+        ak_attitude_step(AK_FRAME_BODY, c, AK_BENCH_SMOOTH_STEP, q_core, NULL);
+        if (worst_apart(q_anchor, q_core, 4) > ANCHOR_ULPS) {
+            fail("the smooth copy of the anchors and the core's step differ");
+        }
+        memcpy(q_anchor, q_core, sizeof q_core);
+    }
+}
+
+static double time_bare_smooth(long n, double q_out[4]) {
+    double q[4] = {1.0, 0.0, 0.0, 0.0};
+    const double start = ak_bench_now_ns();
+    for (long step = 0; step < n; step++) {
+        ak_anchor_smooth_attitude_step(table[step & (TABLE_ROWS - 1)], AK_BENCH_SMOOTH_STEP, q);
+        sink = q[step & 3];
+    }
+    const double elapsed = ak_bench_now_ns() - start;
+    memcpy(q_out, q, sizeof q);
+    return elapsed / (double)n;
+}
+
+static double time_bare_with_angles_smooth(long n) {
+    double q[4] = {1.0, 0.0, 0.0, 0.0}, theta[3] = {0.0, 0.0, 0.0}, R[3][3], distance;
+    const double start = ak_bench_now_ns();
+    for (long step = 0; step < n; step++) {
+        ak_anchor_smooth_attitude_step(table[step & (TABLE_ROWS - 1)], AK_BENCH_SMOOTH_STEP, q);
+        ak_anchor_smooth_quat_to_matrix(q, R);
+        ak_anchor_smooth_angles_123(R, theta, theta, &distance);
+        sink = theta[step % 3];
+    }
+    return (ak_bench_now_ns() - start) / (double)n;
+}
+
 /* n communication points on a fresh instance, reading the first n_read of q[1..4], theta[1..3]:
  * ns per set/doStep/get. */
-static double time_fmu(const fmu_api *api, long n, int n_read, double q_out[4]) {
+AK_INLINE double time_fmu_h(const fmu_api *api, long n, int n_read, double q_out[4], double h) {
     const fmi2CallbackFunctions functions = {log_message, calloc, free, NULL, NULL};
     fmi2Component c = api->instantiate("bench", fmi2CoSimulation, AP_GUID, "file:///unused",
                                        &functions, fmi2False, fmi2False);
@@ -268,9 +342,9 @@ static double time_fmu(const fmu_api *api, long n, int n_read, double q_out[4]) 
     const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         status |= api->set_real(c, OMEGA_VRS, 3, table[step & (TABLE_ROWS - 1)]);
-        status |= api->do_step(c, t, STEP_SIZE, fmi2True);
+        status |= api->do_step(c, t, h, fmi2True);
         status |= api->get_real(c, READ_VRS, (size_t)n_read, read);
-        t += STEP_SIZE;
+        t += h;
         sink = read[step % n_read];
     }
     const double elapsed = ak_bench_now_ns() - start;
@@ -284,7 +358,8 @@ static double time_fmu(const fmu_api *api, long n, int n_read, double q_out[4]) 
 
 /* n communication points through FMI 3 on a fresh instance: one fmi3SetFloat64 of omega,
  * fmi3DoStep, one fmi3GetFloat64 of q (and theta when with_theta): ns per step. */
-static double time_fmu3(const fmu3_api *api, long n, bool with_theta, double q_out[4]) {
+AK_INLINE double time_fmu3_h(const fmu3_api *api, long n, bool with_theta, double q_out[4],
+                             double h) {
     fmi3Instance c = api->instantiate("bench", AP_GUID, NULL, fmi3False, fmi3False, fmi3False,
                                       fmi3False, NULL, 0, NULL, log_message3, NULL);
     if (c == NULL || api->enter_initialization_mode(c, fmi3False, 0.0, 0.0, fmi3False, 0.0) !=
@@ -302,10 +377,10 @@ static double time_fmu3(const fmu3_api *api, long n, bool with_theta, double q_o
     const double start = ak_bench_now_ns();
     for (long step = 0; step < n; step++) {
         status |= (unsigned int)api->set_float64(c, &omega, 1, table[step & (TABLE_ROWS - 1)], 3);
-        status |= (unsigned int)api->do_step(c, t, STEP_SIZE, fmi3True, &event, &terminate,
+        status |= (unsigned int)api->do_step(c, t, h, fmi3True, &event, &terminate,
                                              &early, &last);
         status |= (unsigned int)api->get_float64(c, read_vrs, n_vrs, read, n_values);
-        t += STEP_SIZE;
+        t += h;
         sink = read[step % (long)n_values];
     }
     const double elapsed = ak_bench_now_ns() - start;
@@ -317,11 +392,23 @@ static double time_fmu3(const fmu3_api *api, long n, bool with_theta, double q_o
     return elapsed / (double)n;
 }
 
+static double time_fmu(const fmu_api *api, long n, int n_read, double q_out[4]) {
+#define CALL(h) time_fmu_h(api, n, n_read, q_out, h)
+    return AK_WITH_STEP(CALL);
+#undef CALL
+}
+
+static double time_fmu3(const fmu3_api *api, long n, bool with_theta, double q_out[4]) {
+#define CALL(h) time_fmu3_h(api, n, with_theta, q_out, h)
+    return AK_WITH_STEP(CALL);
+#undef CALL
+}
+
 /* The loops: the anchors, then FMI 2 and FMI 3 of the current build and of the previous release,
  * each reading q, then q and theta. */
 enum {
-    BARE, ANGLES, FMU_Q, FMU_THETA, FMU3_Q, FMU3_THETA, PREV_Q, PREV_THETA, PREV3_Q, PREV3_THETA,
-    N_LOOPS, MAX_REPEATS = 100
+    BARE, ANGLES, FMU_Q, FMU_THETA, FMU3_Q, FMU3_THETA, PT_Q, PT_THETA, PT3_Q, PT3_THETA,
+    PREV_Q, PREV_THETA, PREV3_Q, PREV3_THETA, N_LOOPS, MAX_REPEATS = 100
 };
 static const char *const LOOP_NAMES[N_LOOPS] = {"bare", "angles", "q", "q+theta", "q3", "q+theta3"};
 static const char *const LABELS[N_LOOPS] = {
@@ -331,6 +418,10 @@ static const char *const LABELS[N_LOOPS] = {
     "FMI 2: set omega[1..3] + fmi2DoStep + get q[1..4], theta[1..3]",
     "FMI 3: set omega + fmi3DoStep + get q",
     "FMI 3: set omega + fmi3DoStep + get q, theta",
+    "pass-through FMU, FMI 2: set 3 + doStep + get 4",
+    "pass-through FMU, FMI 2: set 3 + doStep + get 7",
+    "pass-through FMU, FMI 3: set 1 array of 3 + doStep + get 1 array of 4",
+    "pass-through FMU, FMI 3: set 1 array of 3 + doStep + get 2 arrays, 7 values",
     "previous release, FMI 2: set omega + doStep + get q",
     "previous release, FMI 2: set omega + doStep + get q, theta",
     "previous release, FMI 3: set omega + doStep + get q",
@@ -345,15 +436,30 @@ static bool reads_theta(int loop) {
 typedef struct {
     fmu_api fmi2[2];
     fmu3_api fmi3[2];
+    ak_passthrough2 pt2;
+    ak_passthrough3 pt3;
 } binaries;
+
+static bool is_passthrough(int loop) {
+    return loop >= PT_Q && loop <= PT3_THETA;
+}
 
 /* One run of loop `loop`: ns per step; q_out receives the final q (not for ANGLES). */
 static double run_loop(int loop, const binaries *b, long steps, double q_out[4]) {
     switch (loop) {
-    case BARE: return time_bare(steps, q_out);
-    case ANGLES: return time_bare_with_angles(steps);
+    case BARE: return smooth_steps ? time_bare_smooth(steps, q_out) : time_bare(steps, q_out);
+    case ANGLES: return smooth_steps ? time_bare_with_angles_smooth(steps) : time_bare_with_angles(steps);
     case FMU_Q: case FMU_THETA: case PREV_Q: case PREV_THETA:
         return time_fmu(&b->fmi2[loop >= PREV_Q], steps, reads_theta(loop) ? 7 : 4, q_out);
+    case PT_Q: case PT_THETA:
+        return ak_passthrough2_cycle(&b->pt2, &table[0][0], 3, 3, reads_theta(loop) ? 7 : 4,
+                                     step_size(), steps);
+    case PT3_Q: case PT3_THETA: {
+        static const fmi3ValueReference omega = 0, read[2] = {21, 25}; /* PassThrough3's */
+        return ak_passthrough3_cycle(&b->pt3, &table[0][0], 3, &omega, 1, 1, read,
+                                     reads_theta(loop) ? 2 : 1, reads_theta(loop) ? 7 : 4,
+                                     step_size(), steps);
+    }
     default: return time_fmu3(&b->fmi3[loop >= PREV_Q], steps, reads_theta(loop), q_out);
     }
 }
@@ -362,6 +468,9 @@ static double run_loop(int loop, const binaries *b, long steps, double q_out[4])
 static bool loop_given(int loop, const binaries *b) {
     if (loop < FMU3_Q) {
         return true;
+    }
+    if (is_passthrough(loop)) {
+        return b->pt2.library != NULL;
     }
     const int previous = loop >= PREV_Q;
     return loop == PREV_Q || loop == PREV_THETA ? b->fmi2[1].library != NULL
@@ -376,6 +485,7 @@ int main(int argc, char **argv) {
     long steps = 1000000;
     int repeats = 5;
     const char *previous = NULL, *only = NULL, *fmi3 = NULL, *previous3 = NULL;
+    const char *pt2 = NULL, *pt3 = NULL, *inputs = NULL;
     for (int i = 2; i + 1 < argc; i += 2) {
         if (strcmp(argv[i], "--steps") == 0) {
             steps = (long)strtod(argv[i + 1], NULL);
@@ -389,6 +499,12 @@ int main(int argc, char **argv) {
             previous3 = argv[i + 1];
         } else if (strcmp(argv[i], "--only") == 0) {
             only = argv[i + 1];
+        } else if (strcmp(argv[i], "--passthrough") == 0) {
+            pt2 = argv[i + 1];
+        } else if (strcmp(argv[i], "--passthrough3") == 0) {
+            pt3 = argv[i + 1];
+        } else if (strcmp(argv[i], "--inputs") == 0) {
+            inputs = argv[i + 1];
         } else {
             fail("unknown option");
         }
@@ -396,11 +512,40 @@ int main(int argc, char **argv) {
     if (steps < 1 || repeats < 1 || repeats > MAX_REPEATS) {
         fail("--steps and --repeats must be positive (repeats at most 100)");
     }
-    for (int r = 0; r < TABLE_ROWS; r++) {
+    if ((pt2 == NULL) != (pt3 == NULL) || (pt2 != NULL && fmi3 == NULL)) {
+        fail("--passthrough and --passthrough3 go together, with --fmi3");
+    }
+    ak_bench_kind kind = AK_BENCH_RANDOM;
+    if (inputs != NULL && ak_bench_parse_kind(inputs, &kind) != 0) {
+        fail("--inputs random or smooth");
+    }
+    for (int r = 0; r < TABLE_ROWS; r++) { /* the default rows, the guard's */
         table[r][0] = sin(0.1 * r);
         table[r][1] = 0.5 * cos(0.07 * r);
         table[r][2] = 0.3 + 0.2 * sin(0.13 * r);
     }
+    check_anchors(); /* on the default rows, whatever --inputs */
+    if (inputs != NULL) {
+        static double rows[AK_BENCH_ROWS][AK_BENCH_INPUTS];
+        if (ak_bench_fill_inputs_of_kind(kind, rows) != 0) {
+            fail("the input rows have equal consecutive values");
+        }
+        for (int r = 0; r < TABLE_ROWS; r++) {
+            if (kind == AK_BENCH_SMOOTH) { /* the tumbling body's omega_body */
+                double y[12];
+                ak_angular_kinematics_123(rows[r], rows[r] + 3, rows[r] + 6, y, y + 3, y + 6,
+                                          y + 9);
+                memcpy(table[r], y + 3, sizeof table[r]);
+            } else {
+                memcpy(table[r], rows[r] + 3, sizeof table[r]);
+            }
+        }
+        smooth_steps = kind == AK_BENCH_SMOOTH;
+        if (smooth_steps) {
+            check_smooth_anchor();
+        }
+    }
+    const char *kind_name = inputs == NULL ? "default" : ak_bench_kind_name(kind);
     static binaries b; /* zeroed: a NULL library is a binary not given */
     load_fmu(argv[1], &b.fmi2[0]);
     if (previous != NULL) {
@@ -412,7 +557,10 @@ int main(int argc, char **argv) {
     if (previous3 != NULL) {
         load_fmu3(previous3, &b.fmi3[1]);
     }
-    check_anchors();
+    if (pt2 != NULL) {
+        ak_passthrough2_load(pt2, &b.pt2);
+        ak_passthrough3_load(pt3, &b.pt3);
+    }
     double q[N_LOOPS][4];
     if (only != NULL) {
         for (int loop = 0; loop < FMU3_THETA + 1; loop++) {
@@ -427,6 +575,7 @@ int main(int argc, char **argv) {
         fail("unknown loop for --only (bare, angles, q, q+theta, q3 or q+theta3)");
     }
     static double ns[N_LOOPS][MAX_REPEATS], ratio[N_LOOPS][MAX_REPEATS];
+    static double floor_ratio[N_LOOPS][MAX_REPEATS];
     double q_core[4];
     core_steps(steps, q_core);
     for (int r = 0; r < repeats; r++) {
@@ -435,23 +584,41 @@ int main(int argc, char **argv) {
                 continue;
             }
             ns[loop][r] = run_loop(loop, &b, steps, q[loop]);
-            if (loop >= FMU_Q && memcmp(q_core, q[loop], sizeof q_core) != 0) {
+            if (loop >= FMU_Q && !is_passthrough(loop) &&
+                memcmp(q_core, q[loop], sizeof q_core) != 0) {
                 fail("the FMU's q differs from the core's step");
             }
         }
         for (int loop = 0; loop < N_LOOPS; loop++) { /* reading theta: against update + angles */
-            ratio[loop][r] = ns[loop][r] / ns[reads_theta(loop) ? ANGLES : BARE][r];
+            const double anchor = ns[reads_theta(loop) ? ANGLES : BARE][r];
+            ratio[loop][r] = ns[loop][r] / anchor;
+            floor_ratio[loop][r] = (ns[loop][r] + anchor) / anchor; /* for the pass-through loops */
         }
     }
-    printf("AttitudePropagator, %ld steps of %g s, median of %d repeats (thread CPU time), loops\n"
-           "alternating; a loop reading theta is divided by the update + angles anchor, the\n"
-           "other loops by the bare update:\n",
-           steps, STEP_SIZE, repeats);
+    printf("AttitudePropagator, %s inputs, %ld steps of %g s, median of %d repeats (thread CPU\n"
+           "time), loops alternating; a loop reading theta is divided by the update + angles\n"
+           "anchor, the other loops by the bare update:\n",
+           kind_name, steps, step_size(), repeats);
     printf("| loop | ns per step | / its anchor |\n|---|---:|---:|\n");
     for (int loop = 0; loop < N_LOOPS; loop++) {
         if (loop_given(loop, &b)) {
             printf("| %s | %.1f | %.2f |\n", LABELS[loop], ak_bench_median(ns[loop], repeats),
                    ak_bench_median(ratio[loop], repeats));
+        }
+    }
+    if (b.pt2.library != NULL) {
+        static const char *const KEYS[4] = {"ap-fmi2-q", "ap-fmi2-theta", "ap-fmi3-q",
+                                            "ap-fmi3-theta"};
+        printf("\nBeside each FMU loop, the pass-through's same loop: its ns, and (pass-through + "
+               "anchor) / anchor:\n\n| loop | / its anchor | pass-through ns | (pass-through + "
+               "anchor) / anchor |\n|---|---:|---:|---:|\n");
+        for (int loop = FMU_Q; loop <= FMU3_THETA; loop++) {
+            const int pt = loop + (PT_Q - FMU_Q);
+            const double r = ak_bench_median(ratio[loop], repeats);
+            const double pt_ns = ak_bench_median(ns[pt], repeats);
+            const double f = ak_bench_median(floor_ratio[pt], repeats);
+            printf("| %s | %.3f | %.1f | %.3f |\n", LABELS[loop], r, pt_ns, f);
+            ak_bench_record_figure(KEYS[loop - FMU_Q], kind_name, r, f, pt_ns);
         }
     }
     return 0;

@@ -14,10 +14,12 @@
  *     value-reference order and reversed; fmi2SetReal of the 9 inputs alone; fmi2DoStep alone;
  *   - fmi2SetReal of one input to a new value followed by fmi2GetReal of the 12 outputs, for
  *     each of the 9 inputs.
+ * With --passthrough SO, the scaling runs time the same cycle (set 9, doStep, get 12) through the
+ * pass-through FMU too (bench_passthrough.h), beside the others: what the calls cost with no model.
  * Every figure is the median over repeats of (loop CPU time / iterations); the loops compared
  * with each other run alternately within each repeat, and their ratio is the median of the
- * per-repeat ratios. Inputs come from a table of 256 different input vectors, cycled, so that
- * nothing is constant across iterations; one output per iteration is added to a sum written to a
+ * per-repeat ratios. Inputs come from a table of 256 different input vectors (bench_inputs.h,
+ * --inputs random or smooth), cycled, so that nothing is constant across iterations; one output per iteration is added to a sum written to a
  * volatile sink, so no work can be dropped.
  *
  * The evaluations are counted, not timed: with the logCalls category on, the FMU logs
@@ -43,6 +45,7 @@
 #include "kinematics_general.h"
 #include "kinematics_123.h"
 #include "bench_anchor.h" /* after bench_inputs.h, bench_timing.h, kinematics_123.h */
+#include "bench_passthrough.h"
 
 
 enum { N_INPUTS = AK_BENCH_INPUTS, N_OUTPUTS = 12, TABLE_ROWS = AK_BENCH_ROWS };
@@ -211,8 +214,8 @@ static unsigned long evaluations_between(unsigned long before, unsigned long aft
 static double input_table[TABLE_ROWS][N_INPUTS];
 
 /* The inputs of bench/bench_inputs.h, shared with bench_fmi3.c. */
-static void fill_input_table(void) {
-    if (ak_bench_fill_inputs(input_table) != 0) {
+static void fill_input_table(ak_bench_kind kind) {
+    if (ak_bench_fill_inputs_of_kind(kind, input_table) != 0) {
         fail("input table has equal consecutive values");
     }
 }
@@ -409,17 +412,22 @@ typedef struct {
     int repeats;
     long calls;
     const char *only; /* "core", "cycle", "all", "lazy" or "get": one loop of sizes[0] */
+    const char *passthrough; /* PassThrough.so, or NULL */
+    ak_bench_kind kind;
 } options;
 
 static void usage(void) {
     fprintf(stderr,
             "usage: bench_fmu FMU_SO [--steps N[,N...]] [--repeats R] [--calls N]\n"
             "                        [--only anchor|core|cycle|all|lazy|get --steps N]\n"
+            "                        [--inputs random|smooth] [--passthrough PassThrough.so]\n"
             "  FMU_SO     the AngularKinematics.so of a Release build\n"
             "  --steps    step counts of the cycle-vs-core runs (default 1e3,1e4,1e5,1e6,1e7)\n"
             "  --repeats  repeats per figure, median quoted (default 5)\n"
             "  --calls    iterations of the get loops (default 1e6)\n"
-            "  --only     run one loop once, print nothing (for instruction counting)\n");
+            "  --only     run one loop once, print nothing (for instruction counting)\n"
+            "  --inputs   the input rows of bench_inputs.h (default random)\n"
+            "  --passthrough  time the pass-through FMU's cycle beside the others\n");
     exit(2);
 }
 
@@ -433,7 +441,8 @@ static long parse_count(const char *text) {
 }
 
 static options parse_options(int argc, char **argv) {
-    options o = {NULL, {1000, 10000, 100000, 1000000, 10000000}, 5, 5, 1000000, NULL};
+    options o = {NULL, {1000, 10000, 100000, 1000000, 10000000}, 5, 5, 1000000, NULL, NULL,
+                 AK_BENCH_RANDOM};
     for (int i = 1; i < argc; i++) {
         const bool has_value = i + 1 < argc;
         if (strcmp(argv[i], "--steps") == 0 && has_value) {
@@ -451,6 +460,12 @@ static options parse_options(int argc, char **argv) {
             o.calls = parse_count(argv[++i]);
         } else if (strcmp(argv[i], "--only") == 0 && has_value) {
             o.only = argv[++i];
+        } else if (strcmp(argv[i], "--passthrough") == 0 && has_value) {
+            o.passthrough = argv[++i];
+        } else if (strcmp(argv[i], "--inputs") == 0 && has_value) {
+            if (ak_bench_parse_kind(argv[++i], &o.kind) != 0) {
+                usage();
+            }
         } else if (argv[i][0] != '-' && o.fmu_path == NULL) {
             o.fmu_path = argv[i];
         } else {
@@ -475,18 +490,31 @@ static const char *const INPUT_NAMES[N_INPUTS] = {
     "theta[1]",      "theta[2]",      "theta[3]",      "theta_dot[1]", "theta_dot[2]",
     "theta_dot[3]", "theta_ddot[1]", "theta_ddot[2]", "theta_ddot[3]"};
 
-static void run_scaling(fmu_api *api, const options *o) {
-    printf("Full cycles: fmi2SetReal of 9 inputs, fmi2DoStep, then fmi2GetReal of the 12 omega/alpha\n"
-           "outputs (cycle), of all %d outputs (all), or of R[1,1] alone (one lazy output).\n"
-           "Each is compared with the anchor, the hand-written 1-2-3 formula (tests/c/kinematics_123.c,\n"
-           "the 12 omega/alpha outputs); the general core (ak_general_angular_kinematics, body123) is\n"
-           "a figure of its own; the five loops run alternately in each repeat; ns are medians of\n"
-           "the repeats, each ratio the median of the per-repeat ratios:\n\n",
-           (int)KIN_N_OUTPUTS);
+/* value printed with format into text, or "-" without the pass-through. */
+static const char *format_or_dash(const ak_passthrough2 *pass, const char *format, double value,
+                                  char text[32]) {
+    if (pass == NULL) {
+        return "-";
+    }
+    snprintf(text, 32, format, value);
+    return text;
+}
+
+static void run_scaling(fmu_api *api, const options *o, const ak_passthrough2 *pass) {
+    printf("Full cycles, %s inputs: fmi2SetReal of 9 inputs, fmi2DoStep, then fmi2GetReal of the\n"
+           "12 omega/alpha outputs (cycle), of all %d outputs (all), or of R[1,1] alone (one lazy\n"
+           "output). Each is compared with the anchor, the hand-written 1-2-3 formula\n"
+           "(tests/c/kinematics_123.c, the 12 omega/alpha outputs); the general core\n"
+           "(ak_general_angular_kinematics, body123) is a figure of its own; the loops run\n"
+           "alternately in each repeat; ns are medians of the repeats, each ratio the median of the\n"
+           "per-repeat ratios. pass-through: the cycle (set 9, doStep, get 12) of the pass-through\n"
+           "FMU; floor: (pass-through + anchor) / anchor, the cycle / anchor of an FMU that added\n"
+           "only the pass-through's calls to the formula:\n\n",
+           ak_bench_kind_name(o->kind), (int)KIN_N_OUTPUTS);
     printf("| steps per run | repeats | anchor ns/step | general core ns | cycle ns/step | "
-           "cycle / anchor | all ns | all / anchor | one lazy ns | one lazy / anchor | "
-           "max RSS KiB | FMU allocations per run |\n");
-    printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+           "cycle / anchor | pass-through ns | floor | all ns | all / anchor | one lazy ns | "
+           "one lazy / anchor | max RSS KiB | FMU allocations per run |\n");
+    printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int s = 0; s < o->n_sizes; s++) {
         const long n = o->sizes[s];
         /* Short runs are repeated more, so that every row rests on at least 1e6 steps. */
@@ -496,8 +524,9 @@ static void run_scaling(fmu_api *api, const options *o) {
         }
         double core[MAX_REPEATS], general[MAX_REPEATS], cycle[MAX_REPEATS], ratios[MAX_REPEATS];
         double all[MAX_REPEATS], all_ratios[MAX_REPEATS], lazy[MAX_REPEATS];
-        double lazy_ratios[MAX_REPEATS];
+        double lazy_ratios[MAX_REPEATS], pt[MAX_REPEATS], floors[MAX_REPEATS];
         unsigned long allocations_per_run = 0;
+        char pt_text[32], floor_text[32];
         time_anchor(n < 1000 ? n : 1000); /* warm-up */
         for (int r = 0; r < repeats; r++) {
             /* Interleaved, so that a slow moment of the shared machine hits all alike. */
@@ -508,13 +537,20 @@ static void run_scaling(fmu_api *api, const options *o) {
             allocations_per_run = allocations - before;
             all[r] = time_cycle(api, ALL_OUTPUT_VRS, KIN_N_OUTPUTS, n);
             lazy[r] = time_cycle(api, ONE_LAZY_VR, 1, n);
+            pt[r] = pass == NULL ? 0.0
+                                 : ak_passthrough2_cycle(pass, &input_table[0][0], N_INPUTS,
+                                                         N_INPUTS, N_OUTPUTS, STEP_SIZE, n);
+            floors[r] = (pt[r] + core[r]) / core[r];
             ratios[r] = cycle[r] / core[r];
             all_ratios[r] = all[r] / core[r];
             lazy_ratios[r] = lazy[r] / core[r];
         }
-        printf("| %ld | %d | %.1f | %.1f | %.1f | %.2f | %.1f | %.2f | %.1f | %.2f | %ld | %lu |\n",
+        printf("| %ld | %d | %.1f | %.1f | %.1f | %.2f | %s | %s | %.1f | %.2f | %.1f | %.2f | %ld "
+               "| %lu |\n",
                n, repeats, ak_bench_median(core, repeats), ak_bench_median(general, repeats),
                ak_bench_median(cycle, repeats), ak_bench_median(ratios, repeats),
+               format_or_dash(pass, "%.1f", ak_bench_median(pt, repeats), pt_text),
+               format_or_dash(pass, "%.2f", ak_bench_median(floors, repeats), floor_text),
                ak_bench_median(all, repeats), ak_bench_median(all_ratios, repeats), ak_bench_median(lazy, repeats),
                ak_bench_median(lazy_ratios, repeats), max_rss_kib(), allocations_per_run);
         fflush(stdout);
@@ -574,7 +610,11 @@ int main(int argc, char **argv) {
     if (!load_fmu(o.fmu_path, &api)) {
         return 1;
     }
-    fill_input_table();
+    fill_input_table(o.kind);
+    static ak_passthrough2 passthrough;
+    if (o.passthrough != NULL) {
+        ak_passthrough2_load(o.passthrough, &passthrough);
+    }
     int n_outputs = 0;
     for (int vr = 0; vr < KIN_N_VALUE_REFERENCES; vr++) {
         if (KIN_VARIABLES[vr].name != NULL && KIN_VARIABLES[vr].causality == AK_CAUSALITY_OUTPUT) {
@@ -604,7 +644,7 @@ int main(int argc, char **argv) {
     printf("FMU outputs equal the bare core's bit for bit on %d input vectors; gets without input\n"
            "change do not recompute.\n\n",
            TABLE_ROWS);
-    run_scaling(&api, &o);
+    run_scaling(&api, &o, o.passthrough != NULL ? &passthrough : NULL);
     run_calls(&api, &o);
     dlclose(api.library);
     return 0;

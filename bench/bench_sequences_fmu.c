@@ -7,7 +7,11 @@
  *     all-outputs anchor: the core functions the FMU runs, called inline with no FMI.
  * Before timing it checks that each anchor agrees with the FMU (relative 1e-12 of the largest
  * output) on the 256 input rows, and fails otherwise.
- *   bench_sequences_fmu FMU_SO [--steps N] [--repeats R]       ns table (medians, alternating)
+ * With --passthrough SO, each sequence's row has the pass-through FMU's cycle (set 9, doStep,
+ * get 12; bench_passthrough.h) beside it, timed in the same alternation. --inputs random|smooth
+ * chooses the rows of bench_inputs.h (default random).
+ *   bench_sequences_fmu FMU_SO [--steps N] [--repeats R] [--inputs random|smooth]
+ *                       [--passthrough SO]                      ns table (medians, alternating)
  *   bench_sequences_fmu FMU_SO --only anchor|cycle|all-anchor|all K --steps N
  *                                                       one loop of sequence K (1..24), no output
  *                                                       (instruction counts, bench/run.sh) */
@@ -25,6 +29,7 @@
 #include "anchors_sequences.h"
 #include "bench_inputs.h"
 #include "bench_timing.h"
+#include "bench_passthrough.h"
 #include "kinematics_general.h"
 
 enum { ROWS = AK_BENCH_ROWS, MAX_REPEATS = 101 };
@@ -202,12 +207,19 @@ int main(int argc, char **argv) {
     }
     long steps = 200000;
     int repeats = 5, only_k = 0;
-    const char *only = NULL;
+    const char *only = NULL, *passthrough_path = NULL;
+    ak_bench_kind kind = AK_BENCH_RANDOM;
     for (int i = 2; i + 1 < argc; i++) {
         if (strcmp(argv[i], "--steps") == 0) {
             steps = (long)atof(argv[++i]);
         } else if (strcmp(argv[i], "--repeats") == 0) {
             repeats = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--inputs") == 0) {
+            if (ak_bench_parse_kind(argv[++i], &kind) != 0) {
+                fail("--inputs random or smooth");
+            }
+        } else if (strcmp(argv[i], "--passthrough") == 0) {
+            passthrough_path = argv[++i];
         } else if (strcmp(argv[i], "--only") == 0 && i + 2 < argc) {
             only = argv[++i];
             only_k = atoi(argv[++i]);
@@ -216,7 +228,7 @@ int main(int argc, char **argv) {
     if (repeats < 1 || repeats > MAX_REPEATS || steps < 1) {
         fail("bad --steps or --repeats");
     }
-    if (ak_bench_fill_inputs(input_table) != 0) {
+    if (ak_bench_fill_inputs_of_kind(kind, input_table) != 0) {
         fail("input table");
     }
     for (int vr = 0; vr < KIN_N_VALUE_REFERENCES; vr++) {
@@ -243,19 +255,39 @@ int main(int argc, char **argv) {
         }
         return 0;
     }
+    static ak_passthrough2 pass;
+    if (passthrough_path != NULL) {
+        ak_passthrough2_load(passthrough_path, &pass);
+    }
     printf("Each sequence's FMI 2 cycle (set 9, doStep, get 12) against its own anchor, the\n"
-           "closed-form formula of bench/anchors_sequences.c (sympy, frozen); %ld steps, %d\n"
-           "alternating repeats, medians:\n\n| sequence | anchor ns | cycle ns | cycle / anchor |\n"
-           "|---|---:|---:|---:|\n", steps, repeats);
+           "closed-form formula of bench/anchors_sequences.c (sympy, frozen); %s inputs, %ld\n"
+           "steps, %d alternating repeats, medians. pass-through: the pass-through FMU's cycle,\n"
+           "floor: (pass-through + anchor) / anchor:\n\n"
+           "| sequence | anchor ns | cycle ns | cycle / anchor | pass-through ns | floor |\n"
+           "|---|---:|---:|---:|---:|---:|\n", ak_bench_kind_name(kind), steps, repeats);
     for (int k = 1; k <= 24; k++) {
-        double a[MAX_REPEATS], cyc[MAX_REPEATS], ratio[MAX_REPEATS];
+        double a[MAX_REPEATS], cyc[MAX_REPEATS], ratio[MAX_REPEATS], pt[MAX_REPEATS];
+        double floors[MAX_REPEATS];
         for (int r = 0; r < repeats; r++) {
             a[r] = time_anchor(k, steps);
             cyc[r] = time_cycle(&api, k, OMEGA_ALPHA, 12, steps);
+            pt[r] = passthrough_path == NULL
+                        ? 0.0
+                        : ak_passthrough2_cycle(&pass, &input_table[0][0], AK_BENCH_INPUTS,
+                                                AK_BENCH_INPUTS, 12, 1e-3, steps);
             ratio[r] = cyc[r] / a[r];
+            floors[r] = (pt[r] + a[r]) / a[r];
         }
-        printf("| %s | %.1f | %.1f | %.2f |\n", AK_SEQUENCES[k - 1].name, ak_bench_median(a, repeats),
-               ak_bench_median(cyc, repeats), ak_bench_median(ratio, repeats));
+        if (passthrough_path != NULL) {
+            printf("| %s | %.1f | %.1f | %.2f | %.1f | %.2f |\n", AK_SEQUENCES[k - 1].name,
+                   ak_bench_median(a, repeats), ak_bench_median(cyc, repeats),
+                   ak_bench_median(ratio, repeats), ak_bench_median(pt, repeats),
+                   ak_bench_median(floors, repeats));
+        } else {
+            printf("| %s | %.1f | %.1f | %.2f | - | - |\n", AK_SEQUENCES[k - 1].name,
+                   ak_bench_median(a, repeats), ak_bench_median(cyc, repeats),
+                   ak_bench_median(ratio, repeats));
+        }
     }
     double a[MAX_REPEATS], cyc[MAX_REPEATS], ratio[MAX_REPEATS];
     for (int r = 0; r < repeats; r++) {
@@ -264,7 +296,8 @@ int main(int argc, char **argv) {
         ratio[r] = cyc[r] / a[r];
     }
     printf("\nEvery output (%d, body123): the FMI 2 cycle reading all of them against the inline\n"
-           "computation of all of them with the core's functions, no FMI:\n\n"
+           "computation of all of them with the core's functions, no FMI (the pass-through FMU\n"
+           "has 12 outputs: none beside this one):\n\n"
            "| all-outputs anchor ns | cycle ns | cycle / anchor |\n|---:|---:|---:|\n"
            "| %.1f | %.1f | %.2f |\n", n_all, ak_bench_median(a, repeats),
            ak_bench_median(cyc, repeats), ak_bench_median(ratio, repeats));

@@ -9,6 +9,10 @@
 #                                   write the record from it, with the current drivers
 # The drivers are the current build's in both cases: re-record when bench/bench_fmi3.c or
 # bench/bench_attitude.c change their loops, or the compiler or libm change.
+# The lines AngularKinematics, EulerRates and AttitudePropagator count the drivers' default rows
+# (bench_fmi3: the random rows of bench/bench_inputs.h; bench_attitude: its own 256 rows of
+# omega). The lines *-smooth count the same loops on the smooth rows (--inputs smooth: a tumbling
+# body sampled every 0.01 s), recorded the same way, from the previous release.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source bench/instructions.sh
@@ -29,6 +33,13 @@ measure() {
     "$fmi3/AttitudePropagator.so" --steps STEPS)
   echo "AttitudePropagator 2 $(instructions_per_step "${attitude[@]}" --only q+theta)"
   echo "AttitudePropagator 3 $(instructions_per_step "${attitude[@]}" --only q+theta3)"
+  local smooth=(--inputs smooth)
+  echo "AngularKinematics-smooth 2 $(instructions_per_step "${kin[@]}" STEPS 1 fmi2 "${smooth[@]}")"
+  echo "AngularKinematics-smooth 3 $(instructions_per_step "${kin[@]}" STEPS 1 fmi3 "${smooth[@]}")"
+  echo "AttitudePropagator-smooth 2 $(instructions_per_step "${attitude[@]}" --only q+theta \
+    "${smooth[@]}")"
+  echo "AttitudePropagator-smooth 3 $(instructions_per_step "${attitude[@]}" --only q+theta3 \
+    "${smooth[@]}")"
 }
 
 if [ "${1:-}" = --record ]; then
@@ -41,6 +52,7 @@ if [ "${1:-}" = --record ]; then
     echo "# one get of 4 arrays);"
     echo "# AttitudePropagator set omega + doStep + get q, theta (FMI 3: one set, one get of 2"
     echo "# arrays)."
+    echo "# The drivers' default rows; *-smooth: the same loops on the smooth rows (--inputs smooth)."
     echo "# Written by bash bench/guard.sh --record; a measurement, kept as recorded (not by"
     echo "# python -m codegen: docs/architecture.md)."
     echo "# model FMI-version instructions"

@@ -15,7 +15,14 @@
 #      copies in bench/attitude_anchor.c, over the largest step count of --steps;
 #   6. the project's sincos beside the C library's sin and cos (bench/bench_sincos.c), and three
 #      atan2 at once (ak_atan2_three) beside three ak_atan2 and three C library atan2
-#      (bench/bench_atan2.c).
+#      (bench/bench_atan2.c);
+#   7. the goals table: each time goal, its median ratio on each input kind, the pass-through
+#      FMU's cycle beside it, met or not.
+# The timed drivers (1, 4, 5 and bench/bench_fmi3.c) run on both input kinds of
+# bench/bench_inputs.h: random rows (angles anywhere at every step) and smooth rows (a tumbling
+# body sampled every 0.01 s, as a co-simulation feeds it); each times the pass-through FMU
+# (bench/passthrough/: FMI 2 and FMI 3, inputs copied to outputs) with the same numbers of
+# inputs, outputs and calls, alternately with the rest, and prints it beside every ratio.
 # The anchors every ratio is to do not move with the FMU (issue 24): the hand-written 1-2-3
 # formula (tests/c/kinematics_123.c) and the bare quaternion update; the general core is a figure
 # of its own. Unless --quick or --no-previous, the previous release's binaries
@@ -25,6 +32,7 @@
 #
 # Usage: bash bench/run.sh [--quick] [--steps LIST] [--repeats R] [--calls N]
 #                          [--fmpy-steps N] [--fmpy-repeats R] [--no-callgrind] [--no-previous]
+#                          [--inputs random|smooth|both]
 #   --quick          a bounded run for CI (well under 30 s): small counts, no callgrind, no
 #                    previous release
 #   --steps LIST     step counts of the scaling runs (default 1e3,1e4,1e5,1e6,1e7)
@@ -32,7 +40,9 @@
 #   --calls N        iterations of the driver's single-call loops (default 1e6)
 #   --fmpy-steps N   steps per fmpy simulation (default 100000)
 #   --fmpy-repeats R fmpy simulations per FMU (default 5)
-# The whole output is also written to build/last-run.md.
+#   --inputs KIND    the input rows of the timed drivers: random, smooth or both (default both)
+# The whole output is also written to build/last-run.md; the goals table's figures to
+# build/bench-figures.txt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -46,6 +56,7 @@ callgrind=yes
 previous=yes
 fmi3_steps=1e6 # per run of bench/bench_fmi3.c (--quick: 1e5)
 sequence_steps=2e5 # per loop of bench/bench_sequences_fmu.c (--quick: 2e4)
+kinds=(random smooth)
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) steps=1e3,1e4,1e5; repeats=3; calls=1e5; fmpy_steps=2000; fmpy_repeats=3
@@ -57,6 +68,12 @@ while [ $# -gt 0 ]; do
     --fmpy-repeats) fmpy_repeats="$2"; shift ;;
     --no-callgrind) callgrind=no ;;
     --no-previous) previous=no ;;
+    --inputs) case "$2" in
+                random|smooth) kinds=("$2") ;;
+                both) kinds=(random smooth) ;;
+                *) echo "bench/run.sh: --inputs random, smooth or both" >&2; exit 2 ;;
+              esac
+              shift ;;
     *) echo "bench/run.sh: unknown option $1 (see the header of bench/run.sh)" >&2; exit 2 ;;
   esac
   shift
@@ -73,6 +90,11 @@ fmu3_so=build/fmu3/binaries/x86_64-linux/AngularKinematics.so
 driver=build/bench/bench_fmu
 ap_so=build/fmu/binaries/linux64/AttitudePropagator.so
 ap3_so=build/fmu3/binaries/x86_64-linux/AttitudePropagator.so
+pt_so=build/passthrough/PassThrough.so
+pt3_so=build/passthrough/PassThrough3.so
+passthroughs=(--passthrough "$pt_so" --passthrough3 "$pt3_so")
+figures=build/bench-figures.txt # "key kind ratio beside passthrough-ns" lines of the drivers
+: >"$figures"
 previous_fmi3=() previous_ap=()
 if [ "$previous" = yes ]; then
   previous_build=$(bash bench/previous_release.sh)/build
@@ -146,7 +168,11 @@ callgrind_table() {
   local rows=("FMI 2: set 9 + doStep + get 12|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi2)"
     "FMI 3: 3 sets of 3 + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" STEPS 1 fmi3)"
     "FMI 3: one set of the 3 arrays + doStep + get of 4 arrays|$(instructions_per_step "${fmi3[@]}" \
-      STEPS 1 fmi3-one-set)")
+      STEPS 1 fmi3-one-set)"
+    "pass-through FMU, FMI 2: set 9 + doStep + get 12|$(instructions_per_step "${fmi3[@]}" \
+      STEPS 1 pt2 "${passthroughs[@]}")"
+    "pass-through FMU, FMI 3: one set of 3 arrays + doStep + get of 4 arrays|$(\
+      instructions_per_step "${fmi3[@]}" STEPS 1 pt3-one-set "${passthroughs[@]}")")
   if [ ${#previous_fmi3[@]} -gt 0 ]; then
     local old=(build/bench/bench_fmi3 "${previous_fmi3[@]}")
     rows+=("previous release, FMI 2 cycle|$(instructions_per_step "${old[@]}" STEPS 1 fmi2)"
@@ -199,19 +225,74 @@ sequence_callgrind_table() {
     "set 9 + doStep + get every output|$c"
 }
 
+# The time goals against the drivers' figures (build/bench-figures.txt): per goal, the median
+# ratio on each input kind, the pass-through's cycle and its ratio beside, met or not. For a
+# ratio to an anchor, the pass-through's ratio is (pass-through cycle + anchor) / anchor, what the
+# ratio would be if the FMU added only the pass-through's calls to the anchor; for FMI 3 / FMI 2,
+# the pass-through's own FMI 3 cycle / its FMI 2 cycle.
+goals_table() {
+  echo "Goals (time, medians of alternating repeats; \"pass-through\": its cycle in ns and its ratio"
+  echo "beside, per input kind: (pass-through + anchor) / anchor, or for FMI 3 / FMI 2 the"
+  echo "pass-through's own FMI 3 / FMI 2):"
+  echo
+  awk -v kinds="${kinds[*]}" '
+    { ratio[$1, $2] = $3; beside[$1, $2] = $4; ns[$1, $2] = $5 }
+    END {
+      n = split("ak-fmi2 ak-fmi3 ap-fmi2-q ap-fmi3-q ap-fmi2-theta ap-fmi3-theta", keys, " ")
+      split("1.3 1.05 1.5 1.5 1.3 1.3", limits, " ")
+      goal["ak-fmi2"] = "AngularKinematics body123 FMI 2 cycle / hand-written 1-2-3 formula"
+      goal["ak-fmi3"] = "AngularKinematics FMI 3 cycle (one set of the 3 arrays) / FMI 2 cycle"
+      goal["ap-fmi2-q"] = "AttitudePropagator FMI 2, get q / bare quaternion update"
+      goal["ap-fmi3-q"] = "AttitudePropagator FMI 3, get q / bare quaternion update"
+      goal["ap-fmi2-theta"] = "AttitudePropagator FMI 2, get q, theta / update + angles"
+      goal["ap-fmi3-theta"] = "AttitudePropagator FMI 3, get q, theta / update + angles"
+      m = split(kinds, kind, " ")
+      printf "| goal | at most |"
+      for (j = 1; j <= m; j++) printf " %s |", kind[j]
+      for (j = 1; j <= m; j++) printf " pass-through, %s |", kind[j]
+      printf " met |\n|---|---:|"
+      for (j = 1; j <= 2 * m; j++) printf "---:|"
+      printf "---|\n"
+      for (i = 1; i <= n; i++) {
+        k = keys[i]; met = ""; missing = 0
+        printf "| %s | %s |", goal[k], limits[i]
+        for (j = 1; j <= m; j++) {
+          if ((k, kind[j]) in ratio) {
+            printf " %.3f |", ratio[k, kind[j]]
+            if (ratio[k, kind[j]] > limits[i] + 0) met = met (met == "" ? "" : ", ") "not on " kind[j]
+          } else {
+            printf " - |"; missing = 1
+          }
+        }
+        for (j = 1; j <= m; j++) {
+          if ((k, kind[j]) in ratio) printf " %.1f ns, %.3f |", ns[k, kind[j]], beside[k, kind[j]]
+          else printf " - |"
+        }
+        printf " %s |\n", missing ? "no figure" : (met == "" ? "yes" : "no (" met ")")
+      }
+    }' "$figures"
+}
+
 {
   echo "## AngularKinematics benchmark (bash bench/run.sh${arguments:+ $arguments})"
   echo
   machine
   echo
-  "$driver" "$fmu_so" --steps "$steps" --repeats "$repeats" --calls "$calls"
-  echo
-  # The FMI 3 cycle beside the FMI 2 cycle and the core, alternately (bench/bench_fmi3.c).
-  build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" "$fmi3_steps" "$repeats" all "${previous_fmi3[@]}"
-  echo
-  # Every sequence against its own anchor; every output against the all-outputs anchor.
-  build/bench/bench_sequences_fmu "$fmu_so" --steps "$sequence_steps" --repeats "$repeats"
-  echo
+  for kind in "${kinds[@]}"; do
+    echo "### AngularKinematics, $kind inputs"
+    echo
+    "$driver" "$fmu_so" --steps "$steps" --repeats "$repeats" --calls "$calls" --inputs "$kind" \
+      --passthrough "$pt_so"
+    echo
+    # The FMI 3 cycle beside the FMI 2 cycle and the core, alternately (bench/bench_fmi3.c).
+    AK_BENCH_FIGURES=$figures build/bench/bench_fmi3 "$fmu_so" "$fmu3_so" "$fmi3_steps" \
+      "$repeats" all "${previous_fmi3[@]}" --inputs "$kind" "${passthroughs[@]}"
+    echo
+    # Every sequence against its own anchor; every output against the all-outputs anchor.
+    build/bench/bench_sequences_fmu "$fmu_so" --steps "$sequence_steps" --repeats "$repeats" \
+      --inputs "$kind" --passthrough "$pt_so"
+    echo
+  done
   if [ "$callgrind" = yes ] && command -v valgrind >/dev/null 2>&1; then
     callgrind_table
     echo
@@ -223,12 +304,19 @@ sequence_callgrind_table() {
     --repeats "$fmpy_repeats"
   echo
   # AttitudePropagator (bench/bench_attitude.c): one CS step beside the bare quaternion update.
-  build/bench/bench_attitude "$ap_so" --fmi3 "$ap3_so" \
-    --steps "${steps##*,}" --repeats "$repeats" "${previous_ap[@]}"
-  echo
+  for kind in "${kinds[@]}"; do
+    echo "### AttitudePropagator, $kind inputs"
+    echo
+    AK_BENCH_FIGURES=$figures build/bench/bench_attitude "$ap_so" --fmi3 "$ap3_so" \
+      --steps "${steps##*,}" --repeats "$repeats" "${previous_ap[@]}" --inputs "$kind" \
+      "${passthroughs[@]}"
+    echo
+  done
   # The project's sincos beside the C library's (bench/bench_sincos.c).
   build/bench/bench_sincos --calls "$(awk -v c="$calls" 'BEGIN { print (c < 4096 ? 4096 : 40 * c) }')" --repeats "$repeats"
   echo
   # Three atan2 at once beside three ak_atan2 and the C library's (bench/bench_atan2.c).
   build/bench/bench_atan2 --calls "$(awk -v c="$calls" 'BEGIN { print (c < 4096 ? 4096 : 2 * c) }')" --repeats "$repeats"
+  echo
+  goals_table
 } | tee build/last-run.md
