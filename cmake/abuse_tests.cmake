@@ -6,10 +6,10 @@ find_package(Threads REQUIRED)
 
 # ak_add_abuse_tests(<model>): the call driver test_fmi2_calls_<Model> (its bad-input table: the
 # rows every model has, tests/c/fmi2_bad_input_table.c, and the model's own,
-# fmu_src/models/<Model>/bad_input_rows.c), the many-instance and soak programs and, in a fuzz
-# build, the fuzzer fuzz_fmi2_<Model>.
+# fmu_src/models/<Model>/tests/bad_input_rows.c), the many-instance and soak programs and, in a
+# fuzz build, the fuzzer fuzz_fmi2_<Model>.
 function(ak_add_abuse_tests model)
-  set(_rows fmu_src/models/${model}/bad_input_rows.c)
+  set(_rows fmu_src/models/${model}/tests/bad_input_rows.c)
   set(_suffix "_${model}")
   # The FMU's sources, compiled once more as a static library the test programs link.
   add_library(ak_fmu_for_tests_${model} STATIC ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${model}}

@@ -1,7 +1,7 @@
 """The bad-input tables of docs/bad_input.md, one per model: what each model's C driver
 (build/test_fmi2_calls_<Model>, tests/c/fmi2_bad_input_table.c and
-fmu_src/models/<Model>/bad_input_rows.c) observes, printed by `--table`. The driver refuses to
-print when a row's check fails. Needs the built drivers (bash scripts/build.sh);
+fmu_src/models/<Model>/tests/bad_input_rows.c) observes, printed by `--table`. The driver refuses
+to print when a row's check fails. Needs the built drivers (bash scripts/build.sh);
 tests/python/test_bad_input_table.py checks the document against them. A model the page has no
 table for yet gets a section of its own after the last model's table."""
 import subprocess

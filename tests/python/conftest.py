@@ -141,7 +141,7 @@ def abuse_program(program, model):
 @functools.lru_cache(maxsize=None)
 def bad_input_rows(model):
     """The bad-input table of the C code (tests/c/fmi2_bad_input_table.c and the model's
-    fmu_src/models/<Model>/bad_input_rows.c), the one authority for every bad-input message, as
+    fmu_src/models/<Model>/tests/bad_input_rows.c), the one authority for every bad-input message, as
     its driver proved and printed it: one dict per row with state, call, status and message
     (None: nothing logged)."""
     driver = abuse_program("test_fmi2_calls", model)

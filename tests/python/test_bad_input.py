@@ -1,6 +1,6 @@
 """Bad input, for every model: every kind gets fmi2Error and one message that names the function,
 the variable and the value, and the instance keeps its last valid values. The exact wording is the
-C table's (tests/c/fmi2_bad_input_table.c and fmu_src/models/<Model>/bad_input_rows.c, checked
+C table's (tests/c/fmi2_bad_input_table.c and fmu_src/models/<Model>/tests/bad_input_rows.c, checked
 in test_bad_input_table.py); where a case here is a row of it, the message must be that row's. Non-finite inputs, outputs set and unknown value
 references run for both layers (`layer`: fmi3Error and the FMI 3 function's message too);
 test_fmi3_bad_input.py has the FMI 3 layer's own cases."""

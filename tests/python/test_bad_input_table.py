@@ -1,5 +1,5 @@
 """The C bad-input tables (tests/c/fmi2_bad_input_table.c and each model's
-fmu_src/models/<Model>/bad_input_rows.c) are the one authority for every bad-input message. Their driver (build/test_fmi2_calls_<Model>) makes every call of its table, checks
+fmu_src/models/<Model>/tests/bad_input_rows.c) are the one authority for every bad-input message. Their driver (build/test_fmi2_calls_<Model>) makes every call of its table, checks
 status, message, unchanged instance and memory, and prints the rows as it observed them:
 docs/bad_input.md must show exactly those rows (scripts/update_bad_input_table.sh writes them), and
 the packaged FMU, driven through fmpy, must answer each value row the same way."""
