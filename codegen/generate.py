@@ -187,12 +187,12 @@ def variables_c(model):
 # --- XML ----------------------------------------------------------------------------------------
 
 def flat_sources(model):
-    return [path.split("/")[-1] for path in project.CORE_SOURCES + project.MODEL_SOURCES + model.sources
+    return [path.split("/")[-1] for path in model.core_sources + project.MODEL_SOURCES + model.sources
             + project.FMI2_SOURCES]
 
 
 def flat_fmi3_sources(model):
-    return [path.split("/")[-1] for path in project.CORE_SOURCES + project.MODEL_SOURCES + model.sources
+    return [path.split("/")[-1] for path in model.core_sources + project.MODEL_SOURCES + model.sources
             + [f"models/{model.name}/fmi3/{model.name}_fmi3_arrays.c"] + fmi3.FMI3_SOURCES]
 
 
@@ -368,6 +368,8 @@ def cmake_lists(models):
     for m in models:
         figures = " ".join(f"documentation/{src}" for src, _, _ in m.figures)
         out += [f"set(AK_FMI3_ARRAYS_{m.name}\n  fmu_src/models/{m.name}/fmi3/{m.name}_fmi3_arrays.c)",
+                f"set(AK_CORE_SOURCES_{m.name}\n{cmake_list(m.core_sources)})",
+                f"set(AK_CORE_HEADERS_{m.name}\n{cmake_list(m.core_headers)})",
                 f"set(AK_MODEL_SOURCES_{m.name}\n{cmake_list(m.sources)})",
                 f"set(AK_MODEL_HEADERS_{m.name}\n{cmake_list(m.headers)})",
                 f"set(AK_DOCUMENTATION_FIGURES_{m.name} {figures})"]

@@ -19,6 +19,7 @@ import pytest
 from fmpy import read_model_description, simulate_fmu
 from fmpy.validation import validate_fmu
 
+from codegen.generate import flat_fmi3_sources
 from codegen.models import load
 from conftest import description_path_of
 from fmi3_support import MODELS, fmu3_path, unzipped
@@ -130,6 +131,9 @@ def test_fmu_contents(model):
     assert all(not re.match(r"[a-z]+:", link) for link in links), links
     assert model in html
     assert not any(n.startswith("sources/fmi2") or n.startswith("sources/fmi3Function") for n in names)
+    # the C files of its build description: the model's own core sources (its CORE), no other
+    shipped = {n.split("/")[-1] for n in names if n.startswith("sources/") and n.endswith(".c")}
+    assert shipped == set(flat_fmi3_sources(load(model)))
 
 
 @pytest.mark.parametrize("model", MODELS)

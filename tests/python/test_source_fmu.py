@@ -32,7 +32,7 @@ def repository_files(model):
     from codegen import project
     from codegen.models import load
     m = load(model)
-    paths = (project.CORE_SOURCES + project.CORE_HEADERS + project.MODEL_SOURCES + m.sources +
+    paths = (m.core_sources + m.core_headers + project.MODEL_SOURCES + m.sources +
              m.headers + project.FMI2_SOURCES + project.FMI2_HEADERS)
     return {path.split("/")[-1]: ROOT / "fmu_src" / path for path in paths}
 
