@@ -36,6 +36,7 @@
 #include "bench_timing.h"
 #include "AttitudePropagator_variables.h"
 #include "attitude.h"
+#include "attitude_step.h"
 #include "attitude_anchor.h"
 #include "fmi2FunctionTypes.h"
 #include "fmi3FunctionTypes.h"

@@ -37,6 +37,7 @@
 #include "kinematics_123.h"
 #include "bench_anchor.h" /* after bench_inputs.h, bench_timing.h, kinematics_123.h */
 #include "kinematics_general.h"
+#include "kinematics_general_kernel.h"
 #include "sequences.h"
 
 enum { TABLE_ROWS = AK_BENCH_ROWS, MAX_REPEATS = 51 };

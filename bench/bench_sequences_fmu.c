@@ -26,6 +26,7 @@
 #include "bench_inputs.h"
 #include "bench_timing.h"
 #include "kinematics_general.h"
+#include "bench_all_outputs.h"
 
 enum { ROWS = AK_BENCH_ROWS, MAX_REPEATS = 101 };
 

@@ -4,19 +4,25 @@ set(AK_MODELS AngularKinematics EulerRates AttitudePropagator)
 set(AK_CORE_SOURCES
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_rotation.c
+  fmu_src/core/kinematics_partials.c
+  fmu_src/core/kinematics_euler_rates.c
   fmu_src/core/kinematics_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
   fmu_src/core/attitude.c
   fmu_src/elementary/elementary_reduce.c
-  fmu_src/elementary/elementary_arctangent.c)
+  fmu_src/elementary/elementary_atan.c
+  fmu_src/elementary/elementary_atan2.c)
 set(AK_CORE_HEADERS
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
+  fmu_src/core/kinematics_chain.h
   fmu_src/core/kinematics_sequences.h
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
+  fmu_src/elementary/elementary_arc_kernel.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_COMMON_SOURCES
@@ -78,17 +84,21 @@ set(AK_FMI3_ARRAYS_AngularKinematics
 set(AK_CORE_SOURCES_AngularKinematics
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_rotation.c
+  fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
   fmu_src/elementary/elementary_reduce.c
-  fmu_src/elementary/elementary_arctangent.c)
+  fmu_src/elementary/elementary_atan.c)
 set(AK_CORE_HEADERS_AngularKinematics
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
+  fmu_src/core/kinematics_chain.h
   fmu_src/core/kinematics_sequences.h
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
+  fmu_src/elementary/elementary_arc_kernel.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_SOURCES_AngularKinematics
@@ -103,11 +113,12 @@ set(AK_FMI3_ARRAYS_EulerRates
 set(AK_CORE_SOURCES_EulerRates
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_euler_rates.c
   fmu_src/elementary/elementary_reduce.c)
 set(AK_CORE_HEADERS_EulerRates
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
-  fmu_src/core/kinematics_sequences.h
+  fmu_src/core/kinematics_chain.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
   fmu_src/elementary/elementary_double_double.h
@@ -124,16 +135,19 @@ set(AK_FMI3_ARRAYS_AttitudePropagator
 set(AK_CORE_SOURCES_AttitudePropagator
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_partials.c
+  fmu_src/core/kinematics_euler_rates.c
   fmu_src/core/attitude.c
   fmu_src/elementary/elementary_reduce.c
-  fmu_src/elementary/elementary_arctangent.c)
+  fmu_src/elementary/elementary_atan2.c)
 set(AK_CORE_HEADERS_AttitudePropagator
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
-  fmu_src/core/kinematics_sequences.h
+  fmu_src/core/kinematics_chain.h
   fmu_src/core/attitude.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
+  fmu_src/elementary/elementary_arc_kernel.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_SOURCES_AttitudePropagator

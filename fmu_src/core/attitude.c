@@ -123,12 +123,6 @@ void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
     }
 }
 
-bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction) {
-    double v[3];
-    ak_attitude_step_vector(frame, c, h, v);
-    return ak_attitude_advance(frame, v, q, correction);
-}
-
 bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double *correction) {
     double e[4], next[4];
     ak_quat_exp(v, e);
