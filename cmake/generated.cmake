@@ -20,6 +20,7 @@ set(AK_CORE_HEADERS
   fmu_src/core/kinematics_sequences.h
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude.h
+  fmu_src/core/attitude_sequences.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
   fmu_src/elementary/elementary_arc_kernel.h
@@ -145,6 +146,7 @@ set(AK_CORE_HEADERS_AttitudePropagator
   fmu_src/core/kinematics_general.h
   fmu_src/core/kinematics_chain.h
   fmu_src/core/attitude.h
+  fmu_src/core/attitude_sequences.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
   fmu_src/elementary/elementary_arc_kernel.h

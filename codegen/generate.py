@@ -4,6 +4,8 @@
     fmu_src/core/sequences.c                       the 24 sequences as C data
     fmu_src/core/kinematics_sequences.c            omega and alpha of each sequence as its own
                                                    kernel (codegen/sequence_kernels.py)
+    fmu_src/core/attitude_sequences.h              the angles of each sequence as its own function,
+                                                   and their table (codegen/attitude_sequences.py)
     fmu_src/models/log_categories.h                the log categories (C enum and names)
     fmu_src/models/<Model>/<Model>_variables.{h,c} value references, counts, GUID, variable table
     fmu_src/models/<Model>/<Model>_derived.c       the calls of the core functions that compute
@@ -396,6 +398,7 @@ def outputs():
         files[folder / f"{m.name}_fmi3_arrays.c"] = fmi3.arrays_c(m)
     files[ROOT / "tools" / "fmi3_driver_models.c"] = fmi3.driver_models_c(models)
     files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(models)
-    from codegen import sequence_kernels  # it reads HEADER_NOTE from this module
+    from codegen import attitude_sequences, sequence_kernels  # they read HEADER_NOTE from here
     files.update(sequence_kernels.outputs())
+    files.update(attitude_sequences.outputs())
     return files

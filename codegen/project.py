@@ -74,6 +74,7 @@ CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c", "core/kinematic
                 "elementary/elementary_atan2.c"]
 CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h", "core/kinematics_chain.h",
                 "core/kinematics_sequences.h", "core/kinematics_general_jacobian.h", "core/attitude.h",
+                "core/attitude_sequences.h",
                 "elementary/elementary.h", "elementary/elementary_sincos_three.h",
                 "elementary/elementary_arc_kernel.h", "elementary/elementary_double_double.h",
                 "elementary/elementary_coefficients.h"]
