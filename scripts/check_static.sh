@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Static analysis; any finding fails the run.
 # - cppcheck (Debian's package), once per model over the sources of its binary as one program:
-#   core, runtime, FMI layer, models/model_*.c (what every model shares) and the model's folder (which defines AK_MODEL);
+#   the core sources of the model (its description's CORE), runtime, FMI layer, models/model_*.c
+#   (what every model shares) and the model's folder (which defines AK_MODEL);
 # - cppcheck's unusedFunction over the sources of every model at once (a core function one model
 #   does not call may serve another), exempting by name only the FMI 2.0 entry points: what only
 #   the tests or the benchmark call lives in tests/ or bench/ (each FMU's own list is checked by
@@ -18,12 +19,18 @@ headers=$(.venv/bin/python -c "import fmpy, os; print(os.path.join(os.path.dirna
 read -r -a models <<<"$(.venv/bin/python -c "from codegen.project import MODELS; print(' '.join(MODELS))")"
 includes=(-I fmu_src/core -I fmu_src/elementary -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi2 -I fmu_src/common -I "$headers")
 common=(fmu_src/core/*.c fmu_src/elementary/*.c fmu_src/runtime/*.c fmu_src/fmi2/*.c fmu_src/models/model_*.c)
+# The core sources of a model's binary (cmake/generated.cmake's AK_CORE_SOURCES_<Model>).
+core_of() {
+  .venv/bin/python -c "from codegen.models import load; print(' '.join('fmu_src/' + s for s in load('$1').core_sources))"
+}
 cppcheck --version
 
 for model in "${models[@]}"; do
+  read -r -a core <<<"$(core_of "$model")"
   cppcheck --enable=all --std=c11 --error-exitcode=1 --inline-suppr --quiet \
     --suppress=missingIncludeSystem --suppress=unusedFunction \
-    "${includes[@]}" -I "fmu_src/models/$model" "${common[@]}" "fmu_src/models/$model"/*.c
+    "${includes[@]}" -I "fmu_src/models/$model" "${core[@]}" fmu_src/runtime/*.c fmu_src/fmi2/*.c \
+    fmu_src/models/model_*.c "fmu_src/models/$model"/*.c
   echo "check_static: cppcheck: 0 findings in the sources of $model"
 done
 
@@ -77,12 +84,13 @@ done
 } >"$suppressions"
 for model in "${models[@]}"; do
   [ -d "fmu_src/models/$model/fmi3" ] || continue
+  read -r -a core <<<"$(core_of "$model")"
   fmi3_includes=(-I fmu_src/core -I fmu_src/elementary -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi3 -I fmu_src/common
                  -I "fmu_src/models/$model" -I "$headers")
   cppcheck --enable=all --std=c11 --error-exitcode=1 --inline-suppr --quiet \
     --suppress=missingIncludeSystem --suppress=ConfigurationNotChecked --suppress=unusedFunction \
     "${fmi3_includes[@]}" \
-    fmu_src/fmi3 "fmu_src/models/$model/fmi3" fmu_src/core/*.c fmu_src/elementary/*.c fmu_src/runtime/*.c \
+    fmu_src/fmi3 "fmu_src/models/$model/fmi3" "${core[@]}" fmu_src/runtime/*.c \
     fmu_src/models/model_*.c \
     "fmu_src/models/$model"/*.c
   for source in fmu_src/fmi3/*.c fmu_src/models/"$model"/fmi3/*.c; do
