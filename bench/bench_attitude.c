@@ -50,6 +50,7 @@
 #include "kinematics_123.h"
 #include "AttitudePropagator_variables.h"
 #include "attitude.h"
+#include "attitude_step.h"
 #include "attitude_anchor.h"
 #include "fmi2FunctionTypes.h"
 #include "fmi3FunctionTypes.h"

@@ -42,6 +42,7 @@
 #include "bench_anchor.h" /* after bench_inputs.h, bench_timing.h, kinematics_123.h */
 #include "bench_passthrough.h"
 #include "kinematics_general.h"
+#include "kinematics_general_kernel.h"
 #include "sequences.h"
 
 enum { TABLE_ROWS = AK_BENCH_ROWS, MAX_REPEATS = 51 };

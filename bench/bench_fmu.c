@@ -43,6 +43,7 @@
 #include "bench_inputs.h"
 #include "bench_timing.h"
 #include "kinematics_general.h"
+#include "kinematics_general_kernel.h"
 #include "kinematics_123.h"
 #include "bench_anchor.h" /* after bench_inputs.h, bench_timing.h, kinematics_123.h */
 #include "bench_passthrough.h"

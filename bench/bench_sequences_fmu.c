@@ -31,6 +31,7 @@
 #include "bench_timing.h"
 #include "bench_passthrough.h"
 #include "kinematics_general.h"
+#include "bench_all_outputs.h"
 
 enum { ROWS = AK_BENCH_ROWS, MAX_REPEATS = 101 };
 

@@ -11,13 +11,14 @@ find_package(Threads REQUIRED)
 function(ak_add_abuse_tests model)
   set(_rows fmu_src/models/${model}/tests/bad_input_rows.c)
   set(_suffix "_${model}")
-  # The FMU's sources, compiled once more as a static library the test programs link.
+  # The FMU's sources (its core sources among them), compiled once more as a static library the
+  # test programs link.
   add_library(ak_fmu_for_tests_${model} STATIC ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${model}}
-                                              ${AK_FMI2_SOURCES})
+                                              ${AK_FMI2_SOURCES} ${AK_CORE_SOURCES_${model}})
   target_include_directories(ak_fmu_for_tests_${model} PUBLIC ${AK_INCLUDE_DIRS}
                              fmu_src/models/${model} "${FMI2_HEADERS_DIR}")
   target_compile_options(ak_fmu_for_tests_${model} PRIVATE ${AK_WARNINGS})
-  target_link_libraries(ak_fmu_for_tests_${model} PUBLIC kinematics_core)
+  target_link_libraries(ak_fmu_for_tests_${model} PUBLIC m)
 
   # The master's side shared by the programs: callbacks, the op table, state helpers, the
   # bad-input table (rows common to both models and the model's own rows).

@@ -2,11 +2,12 @@
 # sources; instrumented when AK_SANITIZE is set. build*/fmi3_abuse_<Model>.
 foreach(_model IN LISTS AK_FMI3_MODELS)
   add_library(ak_fmu3_for_tests_${_model} STATIC ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${_model}}
-                                               ${AK_FMI3_ARRAYS_${_model}} ${AK_FMI3_SOURCES})
+                                               ${AK_FMI3_ARRAYS_${_model}} ${AK_FMI3_SOURCES}
+                                               ${AK_CORE_SOURCES_${_model}})
   target_include_directories(ak_fmu3_for_tests_${_model} PUBLIC ${AK_FMI3_INCLUDE_DIRS}
                              fmu_src/models/${_model} "${FMI2_HEADERS_DIR}")
   target_compile_options(ak_fmu3_for_tests_${_model} PRIVATE ${AK_WARNINGS})
-  target_link_libraries(ak_fmu3_for_tests_${_model} PUBLIC kinematics_core)
+  target_link_libraries(ak_fmu3_for_tests_${_model} PUBLIC m)
   if(NOT AK_FUZZ)
     add_executable(fmi3_abuse_${_model} tests/c/fmi3_abuse.c)
     target_compile_options(fmi3_abuse_${_model} PRIVATE ${AK_WARNINGS})

@@ -29,15 +29,18 @@ set(AK_FMI3_INCLUDE_DIRS fmu_src/core fmu_src/elementary fmu_src/models fmu_src/
 
 function(ak_add_fmu3 model)
   set(_target ${model}_fmi3)
-  set(_sources ${AK_CORE_SOURCES} ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${model}}
+  set(_sources ${AK_CORE_SOURCES_${model}} ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${model}}
                ${AK_FMI3_ARRAYS_${model}} ${AK_FMI3_SOURCES})
-  set(_headers ${AK_CORE_HEADERS} ${AK_FMI3_HEADERS} ${AK_MODEL_HEADERS_${model}})
+  set(_headers ${AK_CORE_HEADERS_${model}} ${AK_FMI3_HEADERS} ${AK_MODEL_HEADERS_${model}})
   add_library(${_target} SHARED ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${model}}
-                                ${AK_FMI3_ARRAYS_${model}} ${AK_FMI3_SOURCES})
+                                ${AK_FMI3_ARRAYS_${model}} ${AK_FMI3_SOURCES}
+                                ${AK_CORE_SOURCES_${model}})  # the model's core sources, as the FMI 2 binary
   target_include_directories(${_target} PRIVATE ${AK_FMI3_INCLUDE_DIRS} fmu_src/models/${model}
                                                 "${FMI2_HEADERS_DIR}")
   target_compile_options(${_target} PRIVATE ${AK_WARNINGS})
-  target_link_libraries(${_target} PRIVATE kinematics_core)
+  if(NOT WIN32)
+    target_link_libraries(${_target} PRIVATE m)
+  endif()
   set_target_properties(${_target} PROPERTIES
     OUTPUT_NAME ${model}
     PREFIX ""

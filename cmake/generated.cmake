@@ -4,19 +4,26 @@ set(AK_MODELS AngularKinematics EulerRates AttitudePropagator)
 set(AK_CORE_SOURCES
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_rotation.c
+  fmu_src/core/kinematics_partials.c
+  fmu_src/core/kinematics_euler_rates.c
   fmu_src/core/kinematics_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
   fmu_src/core/attitude.c
   fmu_src/elementary/elementary_reduce.c
-  fmu_src/elementary/elementary_arctangent.c)
+  fmu_src/elementary/elementary_atan.c
+  fmu_src/elementary/elementary_atan2.c)
 set(AK_CORE_HEADERS
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
+  fmu_src/core/kinematics_chain.h
   fmu_src/core/kinematics_sequences.h
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude.h
+  fmu_src/core/attitude_sequences.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
+  fmu_src/elementary/elementary_arc_kernel.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_COMMON_SOURCES
@@ -75,6 +82,26 @@ set(AK_FMI3_HEADERS
 set(AK_FMI3_MODELS ${AK_MODELS})  # the same list under its former name
 set(AK_FMI3_ARRAYS_AngularKinematics
   fmu_src/models/AngularKinematics/fmi3/AngularKinematics_fmi3_arrays.c)
+set(AK_CORE_SOURCES_AngularKinematics
+  fmu_src/core/sequences.c
+  fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_rotation.c
+  fmu_src/core/kinematics_partials.c
+  fmu_src/core/kinematics_sequences.c
+  fmu_src/core/kinematics_general_jacobian.c
+  fmu_src/elementary/elementary_reduce.c
+  fmu_src/elementary/elementary_atan.c)
+set(AK_CORE_HEADERS_AngularKinematics
+  fmu_src/core/sequences.h
+  fmu_src/core/kinematics_general.h
+  fmu_src/core/kinematics_chain.h
+  fmu_src/core/kinematics_sequences.h
+  fmu_src/core/kinematics_general_jacobian.h
+  fmu_src/elementary/elementary.h
+  fmu_src/elementary/elementary_sincos_three.h
+  fmu_src/elementary/elementary_arc_kernel.h
+  fmu_src/elementary/elementary_double_double.h
+  fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_SOURCES_AngularKinematics
   fmu_src/models/AngularKinematics/model.c
   fmu_src/models/AngularKinematics/AngularKinematics_variables.c
@@ -84,6 +111,19 @@ set(AK_MODEL_HEADERS_AngularKinematics
 set(AK_DOCUMENTATION_FIGURES_AngularKinematics documentation/tumbling_body.png documentation/models.svg)
 set(AK_FMI3_ARRAYS_EulerRates
   fmu_src/models/EulerRates/fmi3/EulerRates_fmi3_arrays.c)
+set(AK_CORE_SOURCES_EulerRates
+  fmu_src/core/sequences.c
+  fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_euler_rates.c
+  fmu_src/elementary/elementary_reduce.c)
+set(AK_CORE_HEADERS_EulerRates
+  fmu_src/core/sequences.h
+  fmu_src/core/kinematics_general.h
+  fmu_src/core/kinematics_chain.h
+  fmu_src/elementary/elementary.h
+  fmu_src/elementary/elementary_sincos_three.h
+  fmu_src/elementary/elementary_double_double.h
+  fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_SOURCES_EulerRates
   fmu_src/models/EulerRates/model.c
   fmu_src/models/EulerRates/EulerRates_variables.c
@@ -93,6 +133,25 @@ set(AK_MODEL_HEADERS_EulerRates
 set(AK_DOCUMENTATION_FIGURES_EulerRates documentation/models.svg)
 set(AK_FMI3_ARRAYS_AttitudePropagator
   fmu_src/models/AttitudePropagator/fmi3/AttitudePropagator_fmi3_arrays.c)
+set(AK_CORE_SOURCES_AttitudePropagator
+  fmu_src/core/sequences.c
+  fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_partials.c
+  fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/attitude.c
+  fmu_src/elementary/elementary_reduce.c
+  fmu_src/elementary/elementary_atan2.c)
+set(AK_CORE_HEADERS_AttitudePropagator
+  fmu_src/core/sequences.h
+  fmu_src/core/kinematics_general.h
+  fmu_src/core/kinematics_chain.h
+  fmu_src/core/attitude.h
+  fmu_src/core/attitude_sequences.h
+  fmu_src/elementary/elementary.h
+  fmu_src/elementary/elementary_sincos_three.h
+  fmu_src/elementary/elementary_arc_kernel.h
+  fmu_src/elementary/elementary_double_double.h
+  fmu_src/elementary/elementary_coefficients.h)
 set(AK_MODEL_SOURCES_AttitudePropagator
   fmu_src/models/AttitudePropagator/model.c
   fmu_src/models/AttitudePropagator/AttitudePropagator_variables.c

@@ -138,7 +138,7 @@ def hi26(value):
 
 
 def arc_tables():
-    """Tables of the arc kernel (elementary_arctangent.c): for j = 1 .. ARC_INTERVALS, centre
+    """Tables of the arc kernel (elementary_arc_kernel.h): for j = 1 .. ARC_INTERVALS, centre
     c_j = (2 j + 1)/64 and the Taylor coefficients of atan about it; atan(c_j) with each of the
     quadrants' bases as hi + lo; the slope 1/(1 + c_j^2) as a 26-bit part plus the rounded rest."""
     bases = {0: mpf(0), "pi/2": mpmath.pi / 2, "pi": mpmath.pi}

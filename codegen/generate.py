@@ -4,6 +4,8 @@
     fmu_src/core/sequences.c                       the 24 sequences as C data
     fmu_src/core/kinematics_sequences.c            omega and alpha of each sequence as its own
                                                    kernel (codegen/sequence_kernels.py)
+    fmu_src/core/attitude_sequences.h              the angles of each sequence as its own function,
+                                                   and their table (codegen/attitude_sequences.py)
     fmu_src/models/log_categories.h                the log categories (C enum and names)
     fmu_src/models/<Model>/<Model>_variables.{h,c} value references, counts, GUID, variable table
     fmu_src/models/<Model>/<Model>_derived.c       the calls of the core functions that compute
@@ -188,12 +190,12 @@ def variables_c(model):
 # --- XML ----------------------------------------------------------------------------------------
 
 def flat_sources(model):
-    return [path.split("/")[-1] for path in project.CORE_SOURCES + project.MODEL_SOURCES + model.sources
+    return [path.split("/")[-1] for path in model.core_sources + project.MODEL_SOURCES + model.sources
             + project.FMI2_SOURCES]
 
 
 def flat_fmi3_sources(model):
-    return [path.split("/")[-1] for path in project.CORE_SOURCES + project.MODEL_SOURCES + model.sources
+    return [path.split("/")[-1] for path in model.core_sources + project.MODEL_SOURCES + model.sources
             + [f"models/{model.name}/fmi3/{model.name}_fmi3_arrays.c"] + fmi3.FMI3_SOURCES]
 
 
@@ -369,6 +371,8 @@ def cmake_lists(models):
     for m in models:
         figures = " ".join(f"documentation/{src}" for src, _, _ in m.figures)
         out += [f"set(AK_FMI3_ARRAYS_{m.name}\n  fmu_src/models/{m.name}/fmi3/{m.name}_fmi3_arrays.c)",
+                f"set(AK_CORE_SOURCES_{m.name}\n{cmake_list(m.core_sources)})",
+                f"set(AK_CORE_HEADERS_{m.name}\n{cmake_list(m.core_headers)})",
                 f"set(AK_MODEL_SOURCES_{m.name}\n{cmake_list(m.sources)})",
                 f"set(AK_MODEL_HEADERS_{m.name}\n{cmake_list(m.headers)})",
                 f"set(AK_DOCUMENTATION_FIGURES_{m.name} {figures})"]
@@ -417,6 +421,7 @@ def outputs():
     files[ROOT / "tools" / "fmi3_driver_models.c"] = fmi3.driver_models_c(models)
     files[ROOT / "tools" / "fmu_driver_models.c"] = fmu_driver_models_c(models)
     files[ROOT / "docs" / "fmi3_variables.md"] = fmi3.mapping_markdown(models)
-    from codegen import sequence_kernels  # it reads HEADER_NOTE from this module
+    from codegen import attitude_sequences, sequence_kernels  # they read HEADER_NOTE from here
     files.update(sequence_kernels.outputs())
+    files.update(attitude_sequences.outputs())
     return files

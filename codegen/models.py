@@ -43,6 +43,8 @@ class Model:
     description: str
     sources: list          # relative to fmu_src/
     headers: list
+    core_sources: list     # the core's sources it calls (description.py's CORE), fmu_src/-relative
+    core_headers: list     # the core's headers those and the model's sources include
     capabilities: dict
     enumerations: dict
     arrays: list           # the description's entries, as written
@@ -101,6 +103,29 @@ def _element_name(base, indices):
     if base.startswith("der(") and indices:
         return f"der({_element_name(base[4:-1], indices)})"
     return f"{base}[{','.join(str(i) for i in indices)}]" if indices else base
+
+
+def _included_core_headers(sources):
+    """The headers of fmu_src/core/ and fmu_src/elementary/ that the sources include, directly or
+    through other headers, in the order of project.CORE_HEADERS."""
+    fmu_src = ROOT / "fmu_src"
+    folders = [fmu_src / f for f in ("core", "elementary", "models", "runtime", "common")]
+    found, todo = set(), [fmu_src / s for s in sources]
+    while todo:
+        path = todo.pop()
+        for name in re.findall(r'^#include "([^"]+)"', path.read_text(), re.MULTILINE):
+            header = next((f / name for f in [path.parent] + folders if (f / name).is_file()),
+                          # a generated core header that this run writes first
+                          next((fmu_src / h for h in project.CORE_HEADERS
+                                if h.split("/")[-1] == name), None))
+            if header is not None and header not in found:
+                found.add(header)
+                if header.is_file():
+                    todo.append(header)
+    included = {h.relative_to(fmu_src).as_posix() for h in found}
+    core = {h for h in included if h.split("/")[0] in ("core", "elementary")}
+    assert core <= set(project.CORE_HEADERS), f"not in project.CORE_HEADERS: {core - set(project.CORE_HEADERS)}"
+    return [h for h in project.CORE_HEADERS if h in core]
 
 
 def load(name):
@@ -168,12 +193,15 @@ def load(name):
     scalars.sort(key=lambda s: s.vr)
     _check(name, scalars)
     folder = f"models/{name}"
+    sources = ([f"{folder}/{source}" for source in d.SOURCES] +
+               [f"{folder}/{name}_variables.c", f"{folder}/{name}_derived.c"])
+    assert set(d.CORE) <= set(project.CORE_SOURCES), f"{name}: CORE names a file not in the core"
+    core_sources = [s for s in project.CORE_SOURCES if s in d.CORE]
     return Model(
         name=d.NAME, c_prefix=d.C_PREFIX, guid=d.GUID, description=d.DESCRIPTION,
         documentation=d.DOCUMENTATION, figures=getattr(d, "FIGURES", []),
-        sources=([f"{folder}/{source}" for source in d.SOURCES] +
-                 [f"{folder}/{name}_variables.c", f"{folder}/{name}_derived.c"]),
-        headers=[f"{folder}/{name}_variables.h"],
+        sources=sources, headers=[f"{folder}/{name}_variables.h"], core_sources=core_sources,
+        core_headers=_included_core_headers(core_sources + sources),
         capabilities=d.CAPABILITIES, enumerations=enumerations, arrays=d.VARIABLES,
         scalars=scalars)
 

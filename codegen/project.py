@@ -67,13 +67,16 @@ ENUMERATIONS = {
 # Sources, relative to fmu_src/, in the order they are compiled and listed in <SourceFiles>.
 # The core calls the project's own elementary functions (fmu_src/elementary/, not libm's sin, cos,
 # atan, atan2): they are part of it.
-CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_sequences.c",
-                "core/kinematics_general_jacobian.c", "core/attitude.c",
-                "elementary/elementary_reduce.c", "elementary/elementary_arctangent.c"]
-CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h", "core/kinematics_sequences.h",
-                "core/kinematics_general_jacobian.h", "core/attitude.h",
+CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation.c",
+                "core/kinematics_partials.c", "core/kinematics_euler_rates.c",
+                "core/kinematics_sequences.c", "core/kinematics_general_jacobian.c", "core/attitude.c",
+                "elementary/elementary_reduce.c", "elementary/elementary_atan.c",
+                "elementary/elementary_atan2.c"]
+CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h", "core/kinematics_chain.h",
+                "core/kinematics_sequences.h", "core/kinematics_general_jacobian.h", "core/attitude.h",
+                "core/attitude_sequences.h",
                 "elementary/elementary.h", "elementary/elementary_sincos_three.h",
-                "elementary/elementary_double_double.h",
+                "elementary/elementary_arc_kernel.h", "elementary/elementary_double_double.h",
                 "elementary/elementary_coefficients.h"]
 # The FMI runtime under both FMI layers (fmu_src/runtime/), FMI-independent.
 RUNTIME_SOURCES = ["runtime/instance.c", "runtime/outputs.c", "runtime/lifecycle.c",

@@ -1,6 +1,6 @@
 """fmu_src/core/kinematics_sequences.c: omega and alpha of each of the 24 sequences as straight-line
 C, generated from the sequence's axes by running the general chain formulation of
-fmu_src/core/kinematics_general.c (chain_kinematics) symbolically.
+fmu_src/core/kinematics_chain.h (chain_kinematics of tests/c/kinematics_general_kernel.c) symbolically.
 
 Every value of that run is a structural zero (a component of a unit axis, or anything multiplied
 by one), or a sign and a C expression. A product with a structural zero is a structural zero, a
@@ -78,7 +78,7 @@ def unit(axis):
 
 
 def rotate(p, axis, s, c, v):
-    """v := R_axis(x) v, as rotate() of kinematics_general.c."""
+    """v := R_axis(x) v, as rotate() of kinematics_chain.h."""
     i, j = NEXT[axis], AFTER_NEXT[axis]
     vi, vj = v[i], v[j]
     v[i] = p.sub(p.mul(c, vi), p.mul(s, vj))

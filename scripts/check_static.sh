@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Static analysis; any finding fails the run.
 # - cppcheck (Debian's package), once per model over the sources of its binary as one program:
-#   core, runtime, FMI layer, models/model_*.c (what every model shares) and the model's folder (which defines AK_MODEL);
+#   the core sources of the model (its description's CORE), runtime, FMI layer, models/model_*.c
+#   (what every model shares) and the model's folder (which defines AK_MODEL);
 # - cppcheck's unusedFunction over the sources of every model at once (a core function one model
-#   does not call may serve another), exempting by name only the FMI 2.0 entry points;
+#   does not call may serve another), exempting by name only the FMI 2.0 entry points: what only
+#   the tests or the benchmark call lives in tests/ or bench/ (each FMU's own list is checked by
+#   tests/python/test_dead_code.py);
 # - GCC's -fanalyzer over every .c file of fmu_src/, with each model's include folders.
 #   bash scripts/check_static.sh
 set -euo pipefail
@@ -16,31 +19,20 @@ headers=$(.venv/bin/python -c "import fmpy, os; print(os.path.join(os.path.dirna
 read -r -a models <<<"$(.venv/bin/python -c "from codegen.project import MODELS; print(' '.join(MODELS))")"
 includes=(-I fmu_src/core -I fmu_src/elementary -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi2 -I fmu_src/common -I "$headers")
 common=(fmu_src/core/*.c fmu_src/elementary/*.c fmu_src/runtime/*.c fmu_src/fmi2/*.c fmu_src/models/model_*.c)
+# The core sources of a model's binary (cmake/generated.cmake's AK_CORE_SOURCES_<Model>).
+core_of() {
+  .venv/bin/python -c "from codegen.models import load; print(' '.join('fmu_src/' + s for s in load('$1').core_sources))"
+}
 cppcheck --version
 
 for model in "${models[@]}"; do
+  read -r -a core <<<"$(core_of "$model")"
   cppcheck --enable=all --std=c11 --error-exitcode=1 --inline-suppr --quiet \
     --suppress=missingIncludeSystem --suppress=unusedFunction \
-    "${includes[@]}" -I "fmu_src/models/$model" "${common[@]}" "fmu_src/models/$model"/*.c
+    "${includes[@]}" -I "fmu_src/models/$model" "${core[@]}" fmu_src/runtime/*.c fmu_src/fmi2/*.c \
+    fmu_src/models/model_*.c "fmu_src/models/$model"/*.c
   echo "check_static: cppcheck: 0 findings in the sources of $model"
 done
-
-# The core's functions the FMU sources do not call, each with its reason: exempt in both runs.
-core_exemptions() {
-  echo '  <!-- Reason: the core'"'"'s one-call API; the FMU uses its _of_sines form, the C tests and the'
-  echo '       benchmark'"'"'s bare kernel call it (tests/c, bench/ are not in this run). -->'
-  echo '  <suppress><id>unusedFunction</id><symbolName>ak_general_angular_kinematics</symbolName></suppress>'
-  echo '  <!-- Reason: the same for the attitude step: the FMU calls its two parts (step vector, advance). -->'
-  echo '  <suppress><id>unusedFunction</id><symbolName>ak_attitude_step</symbolName></suppress>'
-  echo '  <!-- Reason: every output from one chain; the FMU runs the sequence kernels and the lazy'
-  echo '       outputs apart (one value whatever else is read), the benchmark'"'"'s all-outputs anchor runs this. -->'
-  echo '  <suppress><id>unusedFunction</id><symbolName>ak_general_all_outputs</symbolName></suppress>'
-  echo '  <!-- Reason: the elementary functions are a complete set (fmu_src/elementary/); the models do not'
-  echo '       call every one, the accuracy test and the C tests do (tests/c is not in this run). -->'
-  for symbol in ak_atan ak_asin ak_acos; do
-    echo "  <suppress><id>unusedFunction</id><symbolName>$symbol</symbolName></suppress>"
-  done
-}
 
 # The entry points the importer calls through the shared library, by name, from the standard's
 # own list (the FMI2_Export declarations of fmi2Functions.h): nothing in the sources calls them.
@@ -50,7 +42,6 @@ trap 'rm -f "$suppressions"' EXIT
   echo '<?xml version="1.0"?>'
   echo '<suppressions>'
   echo '  <!-- Reason: an FMI 2.0 entry point, called by the importer, never by the FMU itself. -->'
-  core_exemptions
   grep -oE 'FMI2_Export +fmi2[A-Za-z]+TYPE +fmi2[A-Za-z]+;' "$headers/fmi2Functions.h" |
     awk '{ sub(";", "", $3); printf "  <suppress><id>unusedFunction</id><symbolName>%s</symbolName></suppress>\n", $3 }'
   echo '</suppressions>'
@@ -87,19 +78,19 @@ done
   for symbol in ak_get_reals ak_set_reals ak_set_input_derivatives; do
     echo "  <suppress><id>unusedFunction</id><symbolName>$symbol</symbolName></suppress>"
   done
-  core_exemptions
   grep -oE 'FMI3_Export +fmi3[A-Za-z0-9]+TYPE +fmi3[A-Za-z0-9]+;' "$headers/fmi3Functions.h" |
     awk '{ sub(";", "", $3); printf "  <suppress><id>unusedFunction</id><symbolName>%s</symbolName></suppress>\n", $3 }'
   echo '</suppressions>'
 } >"$suppressions"
 for model in "${models[@]}"; do
   [ -d "fmu_src/models/$model/fmi3" ] || continue
+  read -r -a core <<<"$(core_of "$model")"
   fmi3_includes=(-I fmu_src/core -I fmu_src/elementary -I fmu_src/models -I fmu_src/runtime -I fmu_src/fmi3 -I fmu_src/common
                  -I "fmu_src/models/$model" -I "$headers")
   cppcheck --enable=all --std=c11 --error-exitcode=1 --inline-suppr --quiet \
     --suppress=missingIncludeSystem --suppress=ConfigurationNotChecked --suppress=unusedFunction \
     "${fmi3_includes[@]}" \
-    fmu_src/fmi3 "fmu_src/models/$model/fmi3" fmu_src/core/*.c fmu_src/elementary/*.c fmu_src/runtime/*.c \
+    fmu_src/fmi3 "fmu_src/models/$model/fmi3" "${core[@]}" fmu_src/runtime/*.c \
     fmu_src/models/model_*.c \
     "fmu_src/models/$model"/*.c
   for source in fmu_src/fmi3/*.c fmu_src/models/"$model"/fmi3/*.c; do

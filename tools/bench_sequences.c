@@ -4,6 +4,7 @@
  *     build/bench_sequences        (after bash scripts/build.sh; Release flags) */
 #include "kinematics_123.h"
 #include "kinematics_general.h"
+#include "kinematics_general_kernel.h"
 #include "sequences.h"
 
 #include <stdio.h>

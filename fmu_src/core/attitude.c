@@ -123,12 +123,6 @@ void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
     }
 }
 
-bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction) {
-    double v[3];
-    ak_attitude_step_vector(frame, c, h, v);
-    return ak_attitude_advance(frame, v, q, correction);
-}
-
 bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double *correction) {
     double e[4], next[4];
     ak_quat_exp(v, e);
@@ -198,8 +192,8 @@ static void elementary(int a, double x, double E[3][3]) {
     E[after][after] = co;
 }
 
-/* Inlined into each sequence's function below, where the chain is constant and the indices,
- * signs and the order of theta fold away. */
+/* Inlined into each sequence's function (attitude_sequences.h), where the chain is constant and
+ * the indices, signs and the order of theta fold away. */
 #if defined(__GNUC__)
 #define AK_CHAIN_INLINE __attribute__((always_inline)) inline
 #else
@@ -364,53 +358,13 @@ static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, 
     return false;
 }
 
-/* One function per sequence, in the order of AK_SEQUENCES: (first, second) chain axes, 1-based
- * as in the name (the chain of a space-fixed sequence starts with its last axis). */
-#define CHAIN_FUNCTION(name, a1, a2, proper, space)                                             \
-    static bool angles_##name(double R[3][3], const double previous[3], double theta[3],        \
-                              double *distance) {                                               \
-        return chain_angles(a1 - 1, a2 - 1, proper, space, R, previous, theta, distance);       \
-    }
-CHAIN_FUNCTION(body123, 1, 2, false, false)
-CHAIN_FUNCTION(body132, 1, 3, false, false)
-CHAIN_FUNCTION(body213, 2, 1, false, false)
-CHAIN_FUNCTION(body231, 2, 3, false, false)
-CHAIN_FUNCTION(body312, 3, 1, false, false)
-CHAIN_FUNCTION(body321, 3, 2, false, false)
-CHAIN_FUNCTION(body121, 1, 2, true, false)
-CHAIN_FUNCTION(body131, 1, 3, true, false)
-CHAIN_FUNCTION(body212, 2, 1, true, false)
-CHAIN_FUNCTION(body232, 2, 3, true, false)
-CHAIN_FUNCTION(body313, 3, 1, true, false)
-CHAIN_FUNCTION(body323, 3, 2, true, false)
-CHAIN_FUNCTION(space123, 3, 2, false, true)
-CHAIN_FUNCTION(space132, 2, 3, false, true)
-CHAIN_FUNCTION(space213, 3, 1, false, true)
-CHAIN_FUNCTION(space231, 1, 3, false, true)
-CHAIN_FUNCTION(space312, 2, 1, false, true)
-CHAIN_FUNCTION(space321, 1, 2, false, true)
-CHAIN_FUNCTION(space121, 1, 2, true, true)
-CHAIN_FUNCTION(space131, 1, 3, true, true)
-CHAIN_FUNCTION(space212, 2, 1, true, true)
-CHAIN_FUNCTION(space232, 2, 3, true, true)
-CHAIN_FUNCTION(space313, 3, 1, true, true)
-CHAIN_FUNCTION(space323, 3, 2, true, true)
-#undef CHAIN_FUNCTION
-
-static const ak_attitude_angles_function CHAIN_FUNCTIONS[AK_SEQUENCE_COUNT] = {
-    angles_body123,  angles_body132,  angles_body213,  angles_body231,  angles_body312,
-    angles_body321,  angles_body121,  angles_body131,  angles_body212,  angles_body232,
-    angles_body313,  angles_body323,  angles_space123, angles_space132, angles_space213,
-    angles_space231, angles_space312, angles_space321, angles_space121, angles_space131,
-    angles_space212, angles_space232, angles_space313, angles_space323};
+/* angles_body123 .. angles_space323 and their table ANGLES_OF_SEQUENCE, generated from the
+ * sequences of codegen/project.py. */
+#include "attitude_sequences.h"
 
 ak_attitude_angles_function ak_attitude_angles_of(const ak_sequence *sequence) {
-    /* The table index from the contents (a copy of an entry works too): 12 per kind, 6 per
-     * family, 2 per first axis, then whether the second axis is above the third. */
-    const int a1 = sequence->axes[0], a2 = sequence->axes[1];
-    const int index = 12 * (int)sequence->kind + 6 * (sequence->proper_euler != 0) + 2 * (a1 - 1)
-                      + (2 * a2 + a1 > 6);
-    return CHAIN_FUNCTIONS[index];
+    return ANGLES_OF_SEQUENCE[sequence->kind][sequence->proper_euler != 0][sequence->axes[0] - 1]
+                             [sequence->axes[1] - 1];
 }
 
 bool ak_attitude_angles(const ak_sequence *sequence, double R[3][3],

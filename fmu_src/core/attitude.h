@@ -131,13 +131,11 @@ void ak_attitude_step_vector_constant(ak_frame frame, const double omega[3], dou
 void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
                              const double new_vector[3], double q[4]);
 
-/* q := q advanced over h (section 4). Returns false, q untouched, when the result is not
- * finite (a huge omega h). *correction (may be NULL) receives |q_new - q_uncorrected|, the size
- * of the rounding correction. */
-bool ak_attitude_step(ak_frame frame, double c[4][3], double h, double q[4], double *correction);
-
-/* The same step from its rotation vector Omega (ak_attitude_step_vector): q := q (x) exp(Omega)
- * (body) or exp(Omega) (x) q (fixed), the norm correction, the same result and refusal. */
+/* q := q advanced over h (section 4) from the step's rotation vector Omega
+ * (ak_attitude_step_vector): q := q (x) exp(Omega) (body) or exp(Omega) (x) q (fixed), and the
+ * norm correction. Returns false, q untouched, when the result is not finite (a huge omega h).
+ * *correction (may be NULL) receives |q_new - q_uncorrected|, the size of the rounding
+ * correction. */
 bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double *correction);
 
 /* Angles of `sequence` for the attitude R (sections 5, 6). previous: the last angle set of the

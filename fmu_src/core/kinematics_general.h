@@ -110,25 +110,8 @@ void ak_angle_sines(const double theta[3], ak_sines *sines);
  * theta_k / 2 + pi, so q changes at most its sign, which section 5 fixes anyway. */
 void ak_half_angle_sines(const ak_sines *sines, ak_sines *half);
 
-/* Angular velocity and acceleration of B in both sets of components (section 2, 3). */
-void ak_general_angular_kinematics(const ak_sequence *sequence, const double theta[3],
-                                   const double theta_dot[3], const double theta_ddot[3],
-                                   double omega_fixed[3], double omega_body[3],
-                                   double alpha_fixed[3], double alpha_body[3]);
-
-/* The same, from sines = ak_angle_sines(theta): bit for bit the same results. */
-void ak_general_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
-                                            const double theta_dot[3], const double theta_ddot[3],
-                                            double omega_fixed[3], double omega_body[3],
-                                            double alpha_fixed[3], double alpha_body[3]);
-
-/* The same by the general chain formulation for any sequence, which the function above runs
- * only for a sequence outside AK_SEQUENCES: the reference the generated kernels are checked
- * against (tests/c/test_sequence_kernels.c). */
-void ak_chain_angular_kinematics_of_sines(const ak_sequence *sequence, const ak_sines *sines,
-                                          const double theta_dot[3], const double theta_ddot[3],
-                                          double omega_fixed[3], double omega_body[3],
-                                          double alpha_fixed[3], double alpha_body[3]);
+/* Omega and alpha (sections 2, 3): each sequence's generated kernel, kinematics_sequences.h; the
+ * general chain kernel they are copies of is the tests' (tests/c/kinematics_general_kernel.h). */
 
 /* Every orientation output at once, as the functions below give them one by one. */
 typedef struct {
@@ -142,17 +125,6 @@ typedef struct {
 void ak_general_rotation_outputs(const ak_sequence *sequence, const ak_sines *sines,
                                  const ak_sines *half, const double theta_dot[3],
                                  ak_rotation_outputs *out);
-
-/* Both of the above at once, from one chain: bit for bit what
- * ak_general_angular_kinematics_of_sines and ak_general_rotation_outputs give, for little more
- * than the cost of the first. */
-void ak_general_all_outputs(const ak_sequence *sequence, const ak_sines *sines,
-                            const ak_sines *half, const double theta_dot[3],
-                            const double theta_ddot[3], double omega_fixed[3],
-                            double omega_body[3], double alpha_fixed[3], double alpha_body[3],
-                            double R[3][3], double q[4], double W_fixed[3][3],
-                            double W_body[3][3], double W_fixed_dot[3][3],
-                            double W_body_dot[3][3]);
 
 /* The rotation angle of q (section 7), and its change along dq (the tangent: what the
  * derivatives of an output computed from q need, models/model_derived.c). */

@@ -6,7 +6,8 @@
  *
  * ak_sincos is inline: its usual path (|x| < 2^20, Cody-Waite reduction and two polynomial
  * kernels) is where the models spend their time. Huge arguments go to the exact Payne-Hanek
- * reduction (elementary_reduce.c); atan, atan2, asin and acos are in elementary_arctangent.c. */
+ * reduction (elementary_reduce.c); atan and atan2 are in elementary_atan.c and elementary_atan2.c,
+ * asin and acos in the tests' tests/c/elementary_asin_acos.c (no model calls them). */
 #ifndef ANGULAR_KINEMATICS_ELEMENTARY_H
 #define ANGULAR_KINEMATICS_ELEMENTARY_H
 
@@ -22,14 +23,12 @@
 #pragma STDC FP_CONTRACT OFF
 #endif
 
-/* Special values as C99 Annex F states for sin, cos, atan, atan2, asin, acos. */
+/* Special values as C99 Annex F states for sin, cos, atan, atan2. */
 double ak_atan(double x);
 double ak_atan2(double y, double x);
 /* out[k] = ak_atan2(y[k], x[k]) for k = 0, 1, 2, bit for bit, the three side by side (the angles
  * of a rotation sequence); out may alias y or x. */
 void ak_atan2_three(const double y[3], const double x[3], double out[3]);
-double ak_asin(double x);
-double ak_acos(double x);
 
 /* x = n pi/2 + hi + lo for finite |x| >= 2^20, |hi + lo| <= pi/4, hi + lo exact to about
  * 2^-100 relative (Payne-Hanek with the bits of 2/pi); returns n mod 4. */

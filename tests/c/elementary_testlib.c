@@ -2,6 +2,7 @@
  * for the accuracy tool and test through ctypes (tools/elementary/accuracy.py,
  * tests/python/test_elementary_accuracy.py). Not in the FMU. */
 #include "elementary.h"
+#include "elementary_asin_acos.h"
 
 #include <stddef.h>
 

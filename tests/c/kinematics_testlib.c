@@ -2,6 +2,7 @@
  * flat arrays, for tests through Python's ctypes (tests/test_sequences_core.py). Not in the FMU.
  * A sequence is its index in AK_SEQUENCES; an out-of-range index returns -1 and writes nothing. */
 #include "kinematics_general.h"
+#include "kinematics_general_kernel.h"
 #include "sequences.h"
 
 #if defined(_WIN32)

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 
 #include "attitude.h"
+#include "attitude_step.h"
 #include "kinematics_general.h"
 #include "test_check.h"
 

@@ -2,6 +2,7 @@
  * (F.9.1, F.9.4) bit for bit, signed zeros included, and exact relations that every correct
  * implementation meets. Accuracy against mpmath: tests/python/test_elementary_accuracy.py. */
 #include "elementary.h"
+#include "elementary_asin_acos.h"
 #include "elementary_sincos_three.h"
 #include "test_check.h"
 

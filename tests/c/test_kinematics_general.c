@@ -12,6 +12,7 @@
 #include "kinematics_123.h"
 #include "rotation_matrices.h"
 #include "kinematics_general.h"
+#include "kinematics_general_kernel.h"
 #include "sequences.h"
 #include "test_check.h"
 

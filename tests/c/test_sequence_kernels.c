@@ -7,6 +7,7 @@
  * an output that is exactly zero; such outputs are counted and printed. Usage:
  *   test_sequence_kernels [random inputs per sequence, default 20000] */
 #include "kinematics_general.h"
+#include "kinematics_general_kernel.h"
 #include "sequences.h"
 #include "test_check.h"
 

@@ -12,9 +12,10 @@ from fmpy.validation import validate_fmu
 from conftest import ROOT, c_table_of
 from codegen.reference import KINEMATICS_INPUTS, KINEMATICS_OUTPUTS, RATES_INPUTS, RATES_OUTPUTS
 from codegen import project
-from codegen.models import model_description_path
+from codegen.models import load, model_description_path
 from codegen.project import SEQUENCES, sequence_description
 
+CORE_NAMES = {path.split("/")[-1] for path in project.CORE_SOURCES}
 DISPLAY_UNITS = {"rad": "deg", "rad/s": "deg/s", "rad/s2": "deg/s2"}
 # The interface of every released model, written here apart from its description so that a change
 # of a name, a value reference's place or a parameter is seen. A model not yet released has no pin
@@ -80,6 +81,9 @@ def test_fmu_archive_holds_description_binaries_documentation_sources(model, roo
     assert {n for n in names if n.startswith("sources/") and n.endswith(".c")} == \
         {f"sources/{c}" for c in listed}
     assert f"{name}_variables.c" in listed and "model.c" in listed
+    # the core's sources of the model's own list (its description's CORE), no other
+    core = {path.split("/")[-1] for path in load(name).core_sources}
+    assert {n for n in listed if n in CORE_NAMES} == core
     for other in set(project.MODELS) - {name}:
         assert not any(other in n for n in names), f"{name}.fmu ships a file of {other}"
     assert icon == (root / "model.png").read_bytes()

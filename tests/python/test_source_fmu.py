@@ -32,7 +32,7 @@ def repository_files(model):
     from codegen import project
     from codegen.models import load
     m = load(model)
-    paths = (project.CORE_SOURCES + project.CORE_HEADERS + project.MODEL_SOURCES + m.sources +
+    paths = (m.core_sources + m.core_headers + project.MODEL_SOURCES + m.sources +
              m.headers + project.FMI2_SOURCES + project.FMI2_HEADERS)
     return {path.split("/")[-1]: ROOT / "fmu_src" / path for path in paths}
 
@@ -90,10 +90,13 @@ def test_copy_without_binaries_compiles_with_fmpy_and_simulates_identically(mode
     copy = tmp_path / "fmu"
     shutil.copytree(model.unzipdir, copy)
     shutil.rmtree(copy / "binaries")
-    assert external_libraries(copy) == ["m"]  # sin, atan2, sincos...: not in libc
+    assert external_libraries(copy) == ["m"]  # sqrt...: not in libc
     build_from_sources(copy, tmp_path)
     rebuilt_binary = copy / "binaries" / "linux64" / f"{model.name}.so"
-    assert "libm.so.6" in needed_libraries(rebuilt_binary)  # loads where libm is not loaded yet
+    # It needs what the packaged binary (linked with --no-undefined) needs: libm where that one
+    # calls it (EulerRates does not), so that it loads where libm is not loaded yet.
+    packaged = pathlib.Path(model.unzipdir) / "binaries" / "linux64" / f"{model.name}.so"
+    assert set(needed_libraries(packaged)) <= set(needed_libraries(rebuilt_binary))
     assert read_model_description(str(copy)).guid == model.description.guid
 
     times = np.arange(0.0, 1.0 + 0.5e-2, 1e-2)

@@ -16,6 +16,12 @@ DESCRIPTION = ("Angular velocity and angular acceleration of a rigid body from t
                "of the 24 rotation sequences and their first and second time derivatives; "
                "rotation matrix, quaternion and partial angular velocity matrices")
 SOURCES = ["model.c"]  # this folder's hand-written glue; the generated table is added
+# The core's sources this model calls (relative to fmu_src/): its FMU compiles and ships these
+# alone, with the headers they and the model include (tests/python/test_dead_code.py).
+CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation.c",
+        "core/kinematics_partials.c", "core/kinematics_sequences.c",
+        "core/kinematics_general_jacobian.c", "elementary/elementary_reduce.c",
+        "elementary/elementary_atan.c"]
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections, and
 # these figures of documentation/.
 DOCUMENTATION = [("docs/models.md", ["What it computes", "Rotation sequences and conventions",

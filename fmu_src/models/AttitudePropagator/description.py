@@ -14,6 +14,11 @@ DESCRIPTION = ("Attitude of a rotating rigid body integrated on unit quaternions
                "matrix, angles of any of the 24 rotation sequences, their rates and the angular "
                "velocity and acceleration in both frames as outputs")
 SOURCES = ["model.c"]
+# The core's sources this model calls (relative to fmu_src/): its FMU compiles and ships these
+# alone, with the headers they and the model include (tests/python/test_dead_code.py).
+CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_partials.c",
+        "core/kinematics_euler_rates.c", "core/attitude.c", "elementary/elementary_reduce.c",
+        "elementary/elementary_atan2.c"]
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections.
 DOCUMENTATION = [("docs/attitude_propagator.md", None)]
 CAPABILITIES = dict(provides_directional_derivative=True, can_interpolate_inputs=True,

@@ -8,6 +8,10 @@ DESCRIPTION = ("Kinematic differential equations of any of the 24 rotation seque
                "and second time derivatives of the angles from the angular velocity and its "
                "derivative (body or fixed components)")
 SOURCES = ["model.c"]
+# The core's sources this model calls (relative to fmu_src/): its FMU compiles and ships these
+# alone, with the headers they and the model include (tests/python/test_dead_code.py).
+CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_euler_rates.c",
+        "elementary/elementary_reduce.c"]
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections, and
 # these figures of documentation/.
 DOCUMENTATION = [("docs/models.md", ["Rotation sequences and conventions",
