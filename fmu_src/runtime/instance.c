@@ -40,6 +40,25 @@ static void log_for_model(void *owner, ak_log_category category, ak_status statu
            instance->calling ? ": " : "", message);
 }
 
+bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
+                    const char *count_name, const char *pointer_name) {
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
+           pointer_name, count_name, n);
+    return false;
+}
+
+bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name) {
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, name);
+    return false;
+}
+
+bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
+                          bool vr_missing) {
+    const ak_layer *layer = instance->layer;
+    return ak_refuse_null(instance, call->name, nvr, layer->vr_count_name,
+                          vr_missing ? layer->vr_name : layer->values_name);
+}
+
 const char *ak_state_name(const ak_instance *instance, ak_state state) {
     for (int bit = 0; bit < AK_N_STATES; bit++) {
         if ((unsigned int)state == 1u << bit) {
@@ -153,11 +172,6 @@ bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char 
     memcpy(instance->instance_name, name, size);
     ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: instance \"%s\" created", function, name);
     return true;
-}
-
-void ak_instance_release(ak_instance *instance) {
-    ak_free_all_fmu_states(instance);
-    instance->layer->release(instance, instance->instance_name);
 }
 
 ak_status ak_instance_update(ak_instance *instance, ak_group upto) {

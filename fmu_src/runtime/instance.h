@@ -179,19 +179,43 @@ static inline bool ak_call_passes(const ak_instance *instance, const ak_function
            !ak_log_on(instance, AK_LOG_CALLS);
 }
 
+/* Logs "<function>: <pointer_name> is NULL with <count_name> = <n>"; false. */
+bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
+                    const char *count_name, const char *pointer_name);
+/* NULL is fine only when there is nothing to read or write. Inline: every get and set asks it. */
+static inline bool ak_given(const ak_instance *instance, const char *function, size_t n,
+                            const char *count_name, const void *pointer,
+                            const char *pointer_name) {
+    return n == 0 || pointer != NULL ||
+           ak_refuse_null(instance, function, n, count_name, pointer_name);
+}
+/* Logs "<function>: <name> is NULL"; false. */
+bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name);
+/* A pointer argument that must not be NULL (inline: fmi3DoStep asks it four times a step). */
+static inline bool ak_not_null(const ak_instance *instance, const char *function,
+                               const void *pointer, const char *name) {
+    return pointer != NULL || ak_refuse_null_pointer(instance, function, name);
+}
+/* Logs the refusal of a NULL vr (or else value) with nvr > 0, in the layer's words; false. */
+bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
+                          bool vr_missing);
+/* The call of a getter or setter of scalar value references allowed, and vr and value given when
+ * there is anything to read or write. Inline even where the compiler would share a copy: every
+ * get and set of a communication point asks it. */
+static AK_ALWAYS_INLINE bool ak_scalar_call_valid(const ak_instance *instance,
+                                                  const ak_function_rule *call,
+                                                  const unsigned int vr[], size_t nvr,
+                                                  const void *value) {
+    return ak_call_allowed(instance, call) &&
+           (nvr == 0 || (vr != NULL && value != NULL) ||
+            ak_refuse_null_array(instance, call, nvr, vr == NULL));
+}
 /* Makes a new instance of an embedding layer instance whose own fields (the callbacks its
  * send, allocate and release use) are set: copies the name, puts everything at its start.
  * False when the name cannot be allocated (nothing to free then; the layer says why, naming the
  * instance, which has no name yet). */
 bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char *function,
                        const char *name, ak_interface interface, bool has_logger, bool logging_on);
-
-/* Frees what the runtime allocated for the instance (its name, the FMU states the importer did
- * not free); the layer then frees its own instance. */
-void ak_instance_release(ak_instance *instance);
-
-/* Frees the FMU states the importer did not free (fmu_states.c). */
-void ak_free_all_fmu_states(ak_instance *instance);
 
 /* Puts the instance in its just-instantiated condition (instantiation and reset). */
 void ak_instance_reset(ak_instance *instance);
@@ -214,11 +238,6 @@ static inline unsigned int ak_real_roles_of_run(const ak_instance *instance, uns
     }
     return roles;
 }
-
-/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
- * initialization has not ended (the states follow the parameters until then); after that a
- * state is current without an evaluation. */
-bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr);
 
 /* Brings the output groups up to `upto` (main; main and lazy; every output) up to date with the
  * inputs, evaluating only what an input or parameter change made stale (traced in logCalls);

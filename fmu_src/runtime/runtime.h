@@ -3,7 +3,11 @@
  * calling FMI function's table entry (`call`) checks the call first (ak_call_allowed) and names the
  * function in its messages; one given only its name (`function`) is called by the layer after the
  * layer's own checks. Every function checks all of its arguments before it changes anything: a
- * refused call changes nothing. */
+ * refused call changes nothing.
+ *
+ * The runtime's files call one way, each only those before it: outputs.c, state_image.c <
+ * instance.c (the instance, logging, the call and argument checks, the evaluation) < values.c <
+ * derivatives.c < stepping.c, continuous.c, fmu_states.c < lifecycle.c. */
 #ifndef ANGULAR_KINEMATICS_RUNTIME_H
 #define ANGULAR_KINEMATICS_RUNTIME_H
 
@@ -13,113 +17,8 @@
 
 #include "instance.h"
 
-/* --- life cycle (lifecycle.c) ------------------------------------------------------------------ */
-
-/* A move of the state machine and nothing else (fmi2EnterInitializationMode, fmiXTerminate,
- * fmiXEnterEventMode, ...). */
-ak_status ak_enter_state(ak_instance *instance, const ak_function_rule *call, ak_state state);
-/* The instance as instantiated (fmiXReset). */
-ak_status ak_reset(ak_instance *instance, const ak_function_rule *call);
-/* fmiXSetDebugLogging: switches the n named categories (all when n is 0) after checking every
- * name, so that a bad call changes nothing. */
-ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *call, bool on,
-                               size_t n, const char *const categories[]);
-/* The experiment: tolerance (if defined) finite and >= 0, start time finite, stop time (if
- * defined) finite and not before the start; then the instance is in state `then`
- * (fmi2SetupExperiment: Instantiated; fmi3EnterInitializationMode: Initialization Mode). */
-ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *call,
-                              bool tolerance_defined, double tolerance, double start_time,
-                              bool stop_time_defined, double stop_time, ak_state then);
-/* The states from the parameters, then the outputs at the initial inputs; Event Mode (model
- * exchange) or Step Mode (co-simulation). A refusal of the parameters leaves the instance in
- * Initialization Mode, so that the importer can correct them and call again. */
-ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_rule *call);
-
-/* --- FMU states (fmu_states.c) ----------------------------------------------------------------- */
-
-/* *state: a state of this instance to overwrite, or NULL for a new one. */
-ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
-ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state);
-ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
-ak_status ak_serialized_fmu_state_size(ak_instance *instance, const ak_function_rule *call,
-                                       void *state, size_t *size);
-ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state,
-                                 unsigned char bytes[], size_t size);
-ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
-                                   const unsigned char bytes[], size_t size, void **state);
-
-/* --- co-simulation (stepping.c) ---------------------------------------------------------------- */
-
-/* A step from t by h (checked: finite, h > 0, t the current time, not past the stop time):
- * the model's states advanced, the inputs moved along their derivatives, the time moved. A model
- * with states or evaluate_in_step is evaluated at the end; when that fails the step is not taken
- * (DISCARD, logged; the instance in the layer's step_discarded_state, every value as before). */
-ak_status ak_do_step(ak_instance *instance, const char *function, double t, double h);
-/* Input derivatives (FMI 2 only): of the inputs vr[i], order[i] 1 or 2, finite. */
-ak_status ak_set_input_derivatives(ak_instance *instance, const char *function,
-                                   const unsigned int vr[], size_t nvr, const int order[],
-                                   const double value[]);
-
-/* After the input derivatives changed: recomputes data.any_input_derivative, and marks the
- * outputs stale for a model whose outputs use them. */
-void ak_input_derivatives_changed(ak_instance *instance);
-/* A set of an input forgets its derivatives: the importer restated the value at a new point
- * without a slope, so the input is held from there (docs/capabilities.md). */
-void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
-
-/* --- model exchange (continuous.c) ------------------------------------------------------------- */
-
-ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, double time);
-/* Arrays of the continuous states: count_name/array_name are the layer's argument names. */
-ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule *call,
-                                   const char *count_name, const char *array_name,
-                                   const double x[], size_t nx);
-ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
-                                   const char *count_name, const char *array_name, double x[],
-                                   size_t nx);
-ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
-                                   const char *count_name, const char *array_name,
-                                   double derivatives[], size_t nx);
-ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
-                          const char *count_name, const char *array_name, double nominals[],
-                          size_t nx);
-/* The models have no event indicators: n must be 0. */
-ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *call,
-                                 const char *count_name, size_t n);
-
 /* --- values (values.c) ------------------------------------------------------------------------- */
 
-/* Logs "<function>: <pointer_name> is NULL with <count_name> = <n>"; false. */
-bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
-                    const char *count_name, const char *pointer_name);
-/* NULL is fine only when there is nothing to read or write. Inline: every get and set asks it. */
-static inline bool ak_given(const ak_instance *instance, const char *function, size_t n,
-                            const char *count_name, const void *pointer,
-                            const char *pointer_name) {
-    return n == 0 || pointer != NULL ||
-           ak_refuse_null(instance, function, n, count_name, pointer_name);
-}
-/* Logs "<function>: <name> is NULL"; false. */
-bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name);
-/* A pointer argument that must not be NULL (inline: fmi3DoStep asks it four times a step). */
-static inline bool ak_not_null(const ak_instance *instance, const char *function,
-                               const void *pointer, const char *name) {
-    return pointer != NULL || ak_refuse_null_pointer(instance, function, name);
-}
-/* Logs the refusal of a NULL vr (or else value) with nvr > 0, in the layer's words; false. */
-bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
-                          bool vr_missing);
-/* The call of a getter or setter of scalar value references allowed, and vr and value given when
- * there is anything to read or write. Inline even where the compiler would share a copy: every
- * get and set of a communication point asks it. */
-static AK_ALWAYS_INLINE bool ak_scalar_call_valid(const ak_instance *instance,
-                                                  const ak_function_rule *call,
-                                                  const unsigned int vr[], size_t nvr,
-                                                  const void *value) {
-    return ak_call_allowed(instance, call) &&
-           (nvr == 0 || (vr != NULL && value != NULL) ||
-            ak_refuse_null_array(instance, call, nvr, vr == NULL));
-}
 /* to[0 .. n - 1] := from[0 .. n - 1]. The usual counts of a get (a vector of 3, a quaternion,
  * four vectors) with the count a constant: a few moves instead of a call of memcpy, element by
  * element (gcc made a memcpy of 12 doubles a slow rep movs). */
@@ -154,6 +53,17 @@ static AK_ALWAYS_INLINE bool ak_same_value_references(const unsigned int a[],
     }
     return true;
 }
+/* After the input derivatives changed: recomputes data.any_input_derivative, and marks the
+ * outputs stale for a model whose outputs use them. */
+void ak_input_derivatives_changed(ak_instance *instance);
+/* A set of an input forgets its derivatives: the importer restated the value at a new point
+ * without a slope, so the input is held from there (docs/capabilities.md). */
+void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
+
+/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
+ * initialization has not ended (the states follow the parameters until then); after that a
+ * state is current without an evaluation. */
+bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr);
 /* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
  * its arrays first (FMI 2; the FMI 3 layer expands
  * its arrays into them where it has no faster path). */
@@ -197,5 +107,77 @@ ak_status ak_derivative(ak_instance *instance, const unsigned int unknowns[], si
 bool ak_derivative_variable(const ak_instance *instance, const char *function,
                             const char *list_name, size_t index, unsigned int vr,
                             ak_causality causality, const unsigned int *also);
+
+/* --- co-simulation (stepping.c) ---------------------------------------------------------------- */
+
+/* A step from t by h (checked: finite, h > 0, t the current time, not past the stop time):
+ * the model's states advanced, the inputs moved along their derivatives, the time moved. A model
+ * with states or evaluate_in_step is evaluated at the end; when that fails the step is not taken
+ * (DISCARD, logged; the instance in the layer's step_discarded_state, every value as before). */
+ak_status ak_do_step(ak_instance *instance, const char *function, double t, double h);
+/* Input derivatives (FMI 2 only): of the inputs vr[i], order[i] 1 or 2, finite. */
+ak_status ak_set_input_derivatives(ak_instance *instance, const char *function,
+                                   const unsigned int vr[], size_t nvr, const int order[],
+                                   const double value[]);
+
+/* --- model exchange (continuous.c) ------------------------------------------------------------- */
+
+ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, double time);
+/* Arrays of the continuous states: count_name/array_name are the layer's argument names. */
+ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule *call,
+                                   const char *count_name, const char *array_name,
+                                   const double x[], size_t nx);
+ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
+                                   const char *count_name, const char *array_name, double x[],
+                                   size_t nx);
+ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
+                                   const char *count_name, const char *array_name,
+                                   double derivatives[], size_t nx);
+ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
+                          const char *count_name, const char *array_name, double nominals[],
+                          size_t nx);
+/* The models have no event indicators: n must be 0. */
+ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *call,
+                                 const char *count_name, size_t n);
+
+/* --- FMU states (fmu_states.c) ----------------------------------------------------------------- */
+
+/* *state: a state of this instance to overwrite, or NULL for a new one. */
+ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
+ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state);
+ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
+ak_status ak_serialized_fmu_state_size(ak_instance *instance, const ak_function_rule *call,
+                                       void *state, size_t *size);
+ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state,
+                                 unsigned char bytes[], size_t size);
+ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
+                                   const unsigned char bytes[], size_t size, void **state);
+/* Frees the FMU states the importer did not free. */
+void ak_free_all_fmu_states(ak_instance *instance);
+
+/* --- life cycle (lifecycle.c) ------------------------------------------------------------------ */
+
+/* A move of the state machine and nothing else (fmi2EnterInitializationMode, fmiXTerminate,
+ * fmiXEnterEventMode, ...). */
+ak_status ak_enter_state(ak_instance *instance, const ak_function_rule *call, ak_state state);
+/* The instance as instantiated (fmiXReset). */
+ak_status ak_reset(ak_instance *instance, const ak_function_rule *call);
+/* fmiXSetDebugLogging: switches the n named categories (all when n is 0) after checking every
+ * name, so that a bad call changes nothing. */
+ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *call, bool on,
+                               size_t n, const char *const categories[]);
+/* The experiment: tolerance (if defined) finite and >= 0, start time finite, stop time (if
+ * defined) finite and not before the start; then the instance is in state `then`
+ * (fmi2SetupExperiment: Instantiated; fmi3EnterInitializationMode: Initialization Mode). */
+ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *call,
+                              bool tolerance_defined, double tolerance, double start_time,
+                              bool stop_time_defined, double stop_time, ak_state then);
+/* The states from the parameters, then the outputs at the initial inputs; Event Mode (model
+ * exchange) or Step Mode (co-simulation). A refusal of the parameters leaves the instance in
+ * Initialization Mode, so that the importer can correct them and call again. */
+ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_rule *call);
+/* Frees what the runtime allocated for the instance (its name, the FMU states the importer did
+ * not free); the layer then frees its own instance. */
+void ak_instance_release(ak_instance *instance);
 
 #endif

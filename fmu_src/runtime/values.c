@@ -10,18 +10,6 @@
 #include "ak_bytes.h"
 #include "runtime.h"
 
-bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
-                    const char *count_name, const char *pointer_name) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
-           pointer_name, count_name, n);
-    return false;
-}
-
-bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, name);
-    return false;
-}
-
 /* Every value reference a value array can hold, in order: vr[] is a run first, first + 1, ..
  * exactly when it equals the slice of this table that starts at first (one memcmp). */
 static const unsigned int EVERY_VALUE_REFERENCE[AK_MAX_VARIABLES] = {
@@ -123,6 +111,27 @@ static const ak_get_runs *runs_of(ak_instance *instance, const unsigned int vr[]
     return last;
 }
 
+void ak_input_derivatives_changed(ak_instance *instance) {
+    if (AK_MODEL.outputs_use_input_derivatives) {
+        ak_instance_inputs_changed(instance);
+    }
+    instance->data.any_input_derivative = false;
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
+        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+            if (instance->data.input_derivatives[k][n] != 0.0) {
+                instance->data.any_input_derivative = true;
+            }
+        }
+    }
+}
+
+void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr) {
+    for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+        instance->data.input_derivatives[input_vr][n] = 0.0;
+    }
+    ak_input_derivatives_changed(instance);
+}
+
 static const char *type_name(ak_type type) {
     return type == AK_TYPE_INTEGER ? "Integer" : "Real";
 }
@@ -177,13 +186,6 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
         instance->data.values[vr] = value;
         ak_instance_inputs_changed(instance);
     }
-}
-
-bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
-                          bool vr_missing) {
-    const ak_layer *layer = instance->layer;
-    return ak_refuse_null(instance, call->name, nvr, layer->vr_count_name,
-                          vr_missing ? layer->vr_name : layer->values_name);
 }
 
 bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr) {
