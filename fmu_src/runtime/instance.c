@@ -52,13 +52,6 @@ bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, c
     return false;
 }
 
-bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
-                          bool vr_missing) {
-    const ak_layer *layer = instance->layer;
-    return ak_refuse_null(instance, call->name, nvr, layer->vr_count_name,
-                          vr_missing ? layer->vr_name : layer->values_name);
-}
-
 const char *ak_state_name(const ak_instance *instance, ak_state state) {
     for (int bit = 0; bit < AK_N_STATES; bit++) {
         if ((unsigned int)state == 1u << bit) {
@@ -140,10 +133,16 @@ void ak_instance_reset(ak_instance *instance) {
     instance->time = 0.0;
     instance->stop_time_defined = false;
     instance->stop_time = 0.0;
-    instance->last_runs.nvr = 0;
     instance->calling = NULL;
+    instance->kept_get.nvr = 0;
     for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
         instance->real_role[vr] = (unsigned char)real_role(ak_variable_of((unsigned int)vr));
+    }
+    for (unsigned int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
+        const unsigned int n = instance->layer->elements_at != NULL ? instance->layer->elements_at(vr)
+                               : ak_variable_of(vr) != NULL      ? 1u
+                                                                 : 0u;
+        instance->elements[vr] = (unsigned char)n;
     }
     for (int role = 0; role < AK_N_REAL_ROLES; role++) {
         instance->roles_before[role][0] = 0;

@@ -39,7 +39,7 @@ static AK_ALWAYS_INLINE void ak_copy_values(double *to, const double *from, size
         memcpy(to, from, n * sizeof to[0]);
     }
 }
-/* Whether a and b hold the same n value references (a kept get asked again): a few compared
+/* Whether a and b hold the same n value references (FMI 3's kept get asked again): a few compared
  * element by element (a call of memcmp costs more), more with memcmp. */
 static AK_ALWAYS_INLINE bool ak_same_value_references(const unsigned int a[],
                                                       const unsigned int b[], size_t n) {
@@ -64,9 +64,20 @@ void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
  * initialization has not ended (the states follow the parameters until then); after that a
  * state is current without an evaluation. */
 bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr);
-/* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
- * its arrays first (FMI 2; the FMI 3 layer expands
- * its arrays into them where it has no faster path). */
+/* Gets and sets of Real values: vr[i] names ak_instance.elements[vr[i]] consecutive values (FMI
+ * 2: one; FMI 3: an array), n_values in all (FMI 2: nvr). Each checks the call and every argument
+ * first and refuses in the layer's words (ak_layer); a refused call changes nothing. A get brings
+ * what it reads up to date (at most one evaluation per change); a set marks the outputs stale
+ * only when a bit changed. The layers' usual gets and sets (below, and FMI 3's) take a shorter
+ * path for the calls of every communication point and come here for anything else. */
+ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
+                        const unsigned int vr[], size_t nvr, double values[], size_t n_values);
+ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
+                        const unsigned int vr[], size_t nvr, const double values[],
+                        size_t n_values);
+/* FMI 2's gets and sets of Real values: a run of consecutive value references untraced (a run of
+ * inputs, finite, no input derivative to forget) directly, anything else by ak_get_values and
+ * ak_set_values. */
 ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, double value[]);
 ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
@@ -85,7 +96,8 @@ bool ak_store_inputs(ak_instance *instance, unsigned int first, const double val
 /* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
 bool ak_parameter_settable(const ak_instance *instance, const char *function, size_t index,
                            const ak_variable *variable, double value);
-/* Stores a checked value, traced in logCalls; outputs go stale only when a bit changed. */
+/* Stores a checked value, traced in logCalls; outputs go stale only when a bit changed; an
+ * input's derivatives are forgotten. */
 void ak_store(ak_instance *instance, const char *function, unsigned int vr, double value);
 
 /* --- derivatives (derivatives.c) --------------------------------------------------------------- */
