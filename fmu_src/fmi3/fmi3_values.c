@@ -3,9 +3,8 @@
  * given. Every call checks all of its arguments before it touches a value, so a rejected call
  * changes nothing. Float64 holds the Real variables (and the independent variable time, which
  * can be read only); Int64 the Enumerations (FMI 3, section 2.4.7.1); no variable has another
- * type (fmi3_unsupported.c). */
-#include <float.h>
-#include <math.h>
+ * type (fmi3_unsupported.c). The usual calls of a communication point take the paths below;
+ * every other call is the runtime's (ak_get_values, ak_set_values), in this layer's words. */
 #include <string.h>
 
 #include "ak_bytes.h"

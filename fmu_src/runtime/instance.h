@@ -74,7 +74,8 @@ typedef struct {
     /* How many consecutive values the value reference vr names (FMI 3: an array's, at its first
      * element), 0 for none; NULL: one value per variable (FMI 2). */
     unsigned int (*elements_at)(unsigned int vr);
-    /* The independent variable's value reference, readable as a Real value; NULL: none. */
+    /* The independent variable's value reference (at or past AK_MAX_VARIABLES), readable as a
+     * Real value; NULL: none. */
     const unsigned int *time_vr;
     /* Logs why vr (vr_name[index]) names no Real value a get, or a set, can read or write. */
     void (*refuse_real)(const ak_instance *instance, const char *function, size_t index,

@@ -4,7 +4,6 @@
  * refused call changes nothing. The variables are the model's: Real inputs, Real outputs, and
  * parameters of variability fixed (Real or Integer), which can be set only in Instantiated and
  * Initialization Mode. */
-#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -208,7 +207,7 @@ AK_NOINLINE ak_status ak_get_values(ak_instance *instance, const ak_function_rul
     }
     const ak_status status = update_for(instance, roles, vr, nvr);
     for (size_t i = 0, k = 0; i < nvr; i++) {
-        if (vr[i] >= AK_MAX_VARIABLES) {
+        if (vr[i] >= AK_MAX_VARIABLES) { /* checked above: time, past the value array */
             values[k++] = instance->time;
             continue;
         }
