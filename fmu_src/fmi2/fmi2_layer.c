@@ -44,6 +44,7 @@ const ak_layer FMI2_LAYER = {
     .vr_name = "vr",
     .vr_count_name = "nvr",
     .values_name = "value",
+    .values_count_name = "nvr",
     .state_setter_note = " and a continuous state (fmi2SetContinuousStates sets states in model "
                          "exchange)",
     .step_discarded_state = AK_STEP_FAILED,

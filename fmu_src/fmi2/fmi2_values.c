@@ -1,5 +1,5 @@
-/* FMI 2.0 getters and setters: the runtime's scalar paths (runtime/values.c); the models have no
- * Boolean and no String variables. */
+/* FMI 2.0 getters and setters: the runtime's (runtime/values.c), one value per value reference;
+ * the models have no Boolean and no String variables. */
 #include "fmi2_layer.h"
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -16,7 +16,7 @@ fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
                           fmi2Integer value[]) {
     ak_instance *instance = c;
     const char *self = fmi2_name(AK_FMI2_GET_INTEGER);
-    if (!ak_scalar_call_valid(instance, &FMI2_RULES[AK_FMI2_GET_INTEGER], vr, nvr, value)) {
+    if (!ak_values_call_valid(instance, &FMI2_RULES[AK_FMI2_GET_INTEGER], vr, nvr, value, nvr)) {
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
@@ -34,7 +34,7 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
                           const fmi2Integer value[]) {
     ak_instance *instance = c;
     const char *self = fmi2_name(AK_FMI2_SET_INTEGER);
-    if (!ak_scalar_call_valid(instance, &FMI2_RULES[AK_FMI2_SET_INTEGER], vr, nvr, value)) {
+    if (!ak_values_call_valid(instance, &FMI2_RULES[AK_FMI2_SET_INTEGER], vr, nvr, value, nvr)) {
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
@@ -53,7 +53,7 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
 static fmi2Status reject_absent_type(const ak_instance *instance, ak_fmi2_function function,
                                      const char *type, size_t nvr, const void *vr,
                                      const void *values) {
-    if (!ak_scalar_call_valid(instance, &FMI2_RULES[function], vr, nvr, values)) {
+    if (!ak_values_call_valid(instance, &FMI2_RULES[function], vr, nvr, values, nvr)) {
         return fmi2Error;
     }
     if (nvr > 0) {

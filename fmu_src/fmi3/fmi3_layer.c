@@ -32,6 +32,7 @@ const ak_layer FMI3_LAYER = {
     .vr_name = "valueReferences",
     .vr_count_name = "nValueReferences",
     .values_name = "values",
+    .values_count_name = "nValues",
     .state_setter_note = " and a continuous state (fmi3SetContinuousStates sets states in model "
                          "exchange)",
     /* A discarded step leaves the instance where it was: FMI 3 has no StepFailed state. */
@@ -47,6 +48,11 @@ const ak_layer FMI3_LAYER = {
     .possible_states = {AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_TERMINATED | AK_EVENT_MODE |
                             AK_CONTINUOUS_TIME_MODE,
                         AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_TERMINATED | AK_STEP_MODE},
+    .elements_at = ak3_elements_at,
+    .time_vr = &AK3_TIME_VALUE_REFERENCE,
+    .refuse_real = ak3_refuse_real,
+    .name_of = ak3_name_of,
+    .count_matches = ak3_count_matches,
     .send = send,
     .allocate = allocate,
     .release = release,

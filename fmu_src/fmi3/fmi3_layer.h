@@ -132,6 +132,14 @@ const ak3_array *ak3_array_of_causality(const ak_instance *instance, const char 
 bool ak3_count_matches(const ak_instance *instance, const char *function, const char *count_name,
                        size_t n, size_t total, const unsigned int vr[], size_t n_vr);
 
+/* The layer's arrays as the runtime's values (ak_layer): how many values vr names (its array's
+ * elements at its first value reference, else 0), its array's name, and why it names no Real
+ * value to get or set. */
+unsigned int ak3_elements_at(unsigned int vr);
+const char *ak3_name_of(unsigned int vr);
+void ak3_refuse_real(const ak_instance *instance, const char *function, size_t index,
+                     unsigned int vr, bool set);
+
 /* The elements (scalar value references) of the arrays vr[0 .. n - 1], in order, at most
  * capacity; how many. */
 size_t ak3_expand(const unsigned int vr[], size_t n, unsigned int elements[], size_t capacity);

@@ -3,9 +3,8 @@
  * given. Every call checks all of its arguments before it touches a value, so a rejected call
  * changes nothing. Float64 holds the Real variables (and the independent variable time, which
  * can be read only); Int64 the Enumerations (FMI 3, section 2.4.7.1); no variable has another
- * type (fmi3_unsupported.c). */
-#include <float.h>
-#include <math.h>
+ * type (fmi3_unsupported.c). The usual calls of a communication point take the paths below;
+ * every other call is the runtime's (ak_get_values, ak_set_values), in this layer's words. */
 #include <string.h>
 
 #include "ak_bytes.h"
@@ -80,12 +79,6 @@ bool ak3_count_matches(const ak_instance *instance, const char *function, const 
     return false;
 }
 
-static bool arguments_given(const ak_instance *instance, const char *function, size_t nvr,
-                            const void *vr, size_t n_values, const void *values) {
-    return ak_given(instance, function, nvr, "nValueReferences", vr, "valueReferences") &&
-           ak_given(instance, function, n_values, "nValues", values, "values");
-}
-
 /* The usual get of every communication point: arrays of outputs (their first value references),
  * exactly nValues elements in all. Anything else takes the checked path. *upto: the highest group
  * among them; *one_run: they follow each other in the value array (one copy serves). */
@@ -119,6 +112,27 @@ size_t ak3_expand(const unsigned int vr[], size_t n, unsigned int elements[], si
         }
     }
     return k;
+}
+
+unsigned int ak3_elements_at(unsigned int vr) {
+    const ak3_array *array = ak3_array_of(vr);
+    return array != NULL ? array->n_elements : 0u;
+}
+
+const char *ak3_name_of(unsigned int vr) {
+    return AK3_ARRAYS[vr].name;
+}
+
+void ak3_refuse_real(const ak_instance *instance, const char *function, size_t index,
+                     unsigned int vr, bool set) {
+    if (set && vr == AK3_TIME_VALUE_REFERENCE) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: valueReferences[%zu] = %u is time, the independent variable, which cannot be "
+               "set; no value set",
+               function, index, vr);
+        return;
+    }
+    (void)array_of_type(instance, function, index, vr, AK_TYPE_REAL);
 }
 
 /* The elements of checked value references, array after array. */
@@ -156,95 +170,10 @@ static bool usual_set(const fmi3ValueReference vr[], size_t nvr, size_t n_values
     return nvr > 0 && total == n_values; /* values[] holds nValues: read no further than it */
 }
 
-static bool all_finite(const fmi3Float64 values[], size_t n_values) {
-    bool finite = true;
-    for (size_t k = 0; k < n_values; k++) {
-        finite &= fabs(values[k]) <= DBL_MAX;
-    }
-    return finite;
-}
-
-/* Stores checked values of checked value references. As the FMI 2 layer: every value is
- * stored, and the outputs go stale only when one differs in any bit, so both layers evaluate the
- * same bits. */
-static void store_all(ak_instance *instance, const fmi3ValueReference vr[], size_t nvr,
-                      const fmi3Float64 values[]) {
-    bool changed = false;
-    size_t k = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        double *target = &instance->data.values[vr[i]];
-        const unsigned int n = AK3_ARRAYS[vr[i]].n_elements;
-        for (unsigned int e = 0; e < n; e++, k++) {
-            changed |= !ak_same_double(target[e], values[k]);
-            target[e] = values[k];
-        }
-    }
-    if (changed) {
-        ak_instance_inputs_changed(instance);
-    }
-}
-
 /* True for a get of the states alone (one array: AttitudePropagator's q), which are current
  * without an evaluation once they no longer follow the parameters. */
 static bool states_alone(const fmi3ValueReference vr[], size_t nvr) {
     return AK_MODEL.n_states > 0 && nvr == 1 && AK_MODEL.state_vrs[0] == vr[0];
-}
-
-/* fmi3GetFloat64 but its usual get (output arrays in one run, untraced): each argument checked.
- * Out of line, so that the usual path stays a small function. */
-AK_NOINLINE static fmi3Status get_float64_checked(ak_instance *instance,
-                                                  const fmi3ValueReference vr[], size_t nvr,
-                                                  fmi3Float64 values[], size_t nValues) {
-    const char *self = fmi3_name(AK3_GET_FLOAT64);
-    if (!fmi3_allowed(instance, AK3_GET_FLOAT64) ||
-        !arguments_given(instance, self, nvr, vr, nValues, values)) {
-        return fmi3Error;
-    }
-    ak_group upto;
-    bool one_run;
-    if (usual_get(vr, nvr, nValues, &upto, &one_run)) {
-        /* The states alone (one array: AttitudePropagator's q) are current without an evaluation
-         * once they no longer follow the parameters. */
-        const bool current = states_alone(vr, nvr) && !ak_states_follow_parameters(instance, vr, nvr);
-        const fmi3Status status =
-            current ? fmi3OK : fmi3_status(ak_instance_update(instance, upto));
-        if (one_run) {
-            memcpy(values, &instance->data.values[vr[0]], nValues * sizeof values[0]);
-        } else {
-            copy_out(instance, vr, nvr, values);
-        }
-        return status;
-    }
-    bool main = false;
-    ak_group highest = AK_GROUP_MAIN;
-    size_t total = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
-            total += 1;
-            continue;
-        }
-        const ak3_array *array = array_of_type(instance, self, i, vr[i], AK_TYPE_REAL);
-        if (array == NULL) {
-            return fmi3Error;
-        }
-        const ak_variable *variable = &AK_MODEL.variables[vr[i]];
-        /* Outputs and locals (state derivatives, a model's memory) are the model's to compute. */
-        if (variable->causality == AK_CAUSALITY_OUTPUT ||
-            variable->causality == AK_CAUSALITY_LOCAL) {
-            main = true;
-            highest = variable->group > highest ? variable->group : highest;
-        }
-        total += array->n_elements;
-    }
-    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
-        return fmi3Error;
-    }
-    fmi3Status status = fmi3OK;
-    if (main) {
-        status = fmi3_status(ak_instance_update(instance, highest));
-    }
-    copy_out(instance, vr, nvr, values);
-    return status;
 }
 
 /* True for a call the state table allows, untraced: the usual paths' check, which logs nothing
@@ -302,75 +231,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         }
         return status;
     }
-    return get_float64_checked(instance, vr, nvr, values, nValues);
-}
-
-/* fmi3SetFloat64 of anything but the usual set: each argument checked and a bad one named. Out
- * of line, so that the usual path stays a small function. */
-AK_NOINLINE static fmi3Status set_float64_checked(ak_instance *instance,
-                                                  const fmi3ValueReference vr[], size_t nvr,
-                                                  const fmi3Float64 values[], size_t nValues) {
-    const char *self = fmi3_name(AK3_SET_FLOAT64);
-    size_t total = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        if (vr[i] == AK3_TIME_VALUE_REFERENCE) {
-            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                    "fmi3SetFloat64: valueReferences[%zu] = %u is time, the independent "
-                    "variable, which cannot be set; no value set",
-                    i, vr[i]);
-            return fmi3Error;
-        }
-        const ak3_array *array = array_of_type(instance, self, i, vr[i], AK_TYPE_REAL);
-        if (array == NULL) {
-            return fmi3Error;
-        }
-        const ak_variable *variable = &AK_MODEL.variables[vr[i]];
-        if (variable->causality == AK_CAUSALITY_OUTPUT ||
-            variable->causality == AK_CAUSALITY_LOCAL) {
-            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                    "fmi3SetFloat64: valueReferences[%zu] = %u is %s, %s %s%s: only inputs and "
-                    "parameters can be set; no value set",
-                    i, vr[i], array->name,
-                    variable->causality == AK_CAUSALITY_OUTPUT ? "an" : "a",
-                    ak_causality_name(variable->causality),
-                    ak_state_index(AK_MODEL.state_vrs, vr[i]) >= 0 ? " and a continuous state (fmi3SetContinuousStates sets "
-                                          "states in model exchange)"
-                                        : "");
-            return fmi3Error;
-        }
-        total += array->n_elements;
-    }
-    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
-        return fmi3Error;
-    }
-    size_t k = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        const bool parameter = AK_MODEL.variables[vr[i]].causality == AK_CAUSALITY_PARAMETER;
-        for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++, k++) {
-            if (!isfinite(values[k])) {
-                ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                        "fmi3SetFloat64: %s = %g (values[%zu], valueReferences[%zu] = %u) is not "
-                        "finite; no value set",
-                        AK_MODEL.variables[vr[i] + e].name, values[k], k, i, vr[i]);
-                return fmi3Error;
-            }
-            if (parameter &&
-                !ak_parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i] + e], values[k])) {
-                return fmi3Error;
-            }
-        }
-    }
-    if (ak_log_on(instance, AK_LOG_CALLS)) {
-        k = 0;
-        for (size_t i = 0; i < nvr; i++) {
-            for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++) {
-                ak_store(instance, self, vr[i] + e, values[k++]);
-            }
-        }
-        return fmi3OK;
-    }
-    store_all(instance, vr, nvr, values);
-    return fmi3OK;
+    return fmi3_status(ak_get_values(instance, &FMI3_RULES[AK3_GET_FLOAT64], vr, nvr, values, nValues));
 }
 
 /* True when vr names every input array, in value-reference order (so their elements are the
@@ -387,28 +248,19 @@ static bool every_input_array(const fmi3ValueReference vr[], size_t nvr) {
     return nvr > 0 && next == n_inputs;
 }
 
-/* fmi3SetFloat64 but its usual sets: the usual sets of arrays not in order, then each argument
- * checked. Out of line, so that the usual paths stay small functions. */
+/* fmi3SetFloat64 but its usual sets: one run of input arrays (in value-reference order), untraced;
+ * anything else by the runtime's ak_set_values. Out of line, so that the usual paths stay small
+ * functions. */
 AK_NOINLINE static fmi3Status set_float64_general(ak_instance *instance,
                                                   const fmi3ValueReference vr[], size_t nvr,
                                                   const fmi3Float64 values[], size_t nValues) {
-    const char *self = fmi3_name(AK3_SET_FLOAT64);
-    if (!fmi3_allowed(instance, AK3_SET_FLOAT64) ||
-        !arguments_given(instance, self, nvr, vr, nValues, values)) {
-        return fmi3Error;
-    }
     bool one_run;
-    if (usual_set(vr, nvr, nValues, &one_run) && !ak_log_on(instance, AK_LOG_CALLS)) {
-        if (one_run) { /* one check-and-copy of consecutive values */
-            if (ak_store_inputs(instance, vr[0], values, nValues, 3)) {
-                return fmi3OK;
-            }
-        } else if (all_finite(values, nValues)) {
-            store_all(instance, vr, nvr, values);
-            return fmi3OK;
-        }
+    if (ak_call_passes(instance, &FMI3_RULES[AK3_SET_FLOAT64]) && vr != NULL && values != NULL &&
+        !instance->data.any_input_derivative && usual_set(vr, nvr, nValues, &one_run) && one_run &&
+        ak_store_inputs(instance, vr[0], values, nValues, 3)) {
+        return fmi3OK;
     }
-    return set_float64_checked(instance, vr, nvr, values, nValues);
+    return fmi3_status(ak_set_values(instance, &FMI3_RULES[AK3_SET_FLOAT64], vr, nvr, values, nValues));
 }
 
 /* The other usual set, every input array at once in value-reference order, untraced; anything
@@ -454,8 +306,7 @@ fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
                         fmi3Int64 values[], size_t nValues) {
     ak_instance *instance = c;
     const char *self = fmi3_name(AK3_GET_INT64);
-    if (!fmi3_allowed(instance, AK3_GET_INT64) ||
-        !arguments_given(instance, self, nvr, vr, nValues, values)) {
+    if (!ak_values_call_valid(instance, &FMI3_RULES[AK3_GET_INT64], vr, nvr, values, nValues)) {
         return fmi3Error;
     }
     size_t total = 0;
@@ -479,8 +330,7 @@ fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
                         const fmi3Int64 values[], size_t nValues) {
     ak_instance *instance = c;
     const char *self = fmi3_name(AK3_SET_INT64);
-    if (!fmi3_allowed(instance, AK3_SET_INT64) ||
-        !arguments_given(instance, self, nvr, vr, nValues, values)) {
+    if (!ak_values_call_valid(instance, &FMI3_RULES[AK3_SET_INT64], vr, nvr, values, nValues)) {
         return fmi3Error;
     }
     size_t total = 0;

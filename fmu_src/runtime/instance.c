@@ -40,6 +40,18 @@ static void log_for_model(void *owner, ak_log_category category, ak_status statu
            instance->calling ? ": " : "", message);
 }
 
+bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
+                    const char *count_name, const char *pointer_name) {
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
+           pointer_name, count_name, n);
+    return false;
+}
+
+bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name) {
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, name);
+    return false;
+}
+
 const char *ak_state_name(const ak_instance *instance, ak_state state) {
     for (int bit = 0; bit < AK_N_STATES; bit++) {
         if ((unsigned int)state == 1u << bit) {
@@ -121,10 +133,16 @@ void ak_instance_reset(ak_instance *instance) {
     instance->time = 0.0;
     instance->stop_time_defined = false;
     instance->stop_time = 0.0;
-    instance->last_runs.nvr = 0;
     instance->calling = NULL;
+    instance->kept_get.nvr = 0;
     for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
         instance->real_role[vr] = (unsigned char)real_role(ak_variable_of((unsigned int)vr));
+    }
+    for (unsigned int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
+        const unsigned int n = instance->layer->elements_at != NULL ? instance->layer->elements_at(vr)
+                               : ak_variable_of(vr) != NULL      ? 1u
+                                                                 : 0u;
+        instance->elements[vr] = (unsigned char)n;
     }
     for (int role = 0; role < AK_N_REAL_ROLES; role++) {
         instance->roles_before[role][0] = 0;
@@ -153,11 +171,6 @@ bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char 
     memcpy(instance->instance_name, name, size);
     ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: instance \"%s\" created", function, name);
     return true;
-}
-
-void ak_instance_release(ak_instance *instance) {
-    ak_free_all_fmu_states(instance);
-    instance->layer->release(instance, instance->instance_name);
 }
 
 ak_status ak_instance_update(ak_instance *instance, ak_group upto) {

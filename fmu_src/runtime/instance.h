@@ -58,6 +58,8 @@ typedef struct {
     const char *vr_name;
     const char *vr_count_name;
     const char *values_name;
+    /* The name of the count of values: "nvr" (one value per value reference), "nValues". */
+    const char *values_count_name;
     /* Added to the refusal of a set of a continuous state: where states are set. */
     const char *state_setter_note;
     /* The state an instance is in after a discarded step (FMI 2 StepFailed; FMI 3 stays in Step
@@ -69,6 +71,21 @@ typedef struct {
     ak_state image_states[AK_N_STATES];
     /* The states an instance of each interface can be in ([0] model exchange, [1] co-simulation). */
     unsigned int possible_states[2];
+    /* How many consecutive values the value reference vr names (FMI 3: an array's, at its first
+     * element), 0 for none; NULL: one value per variable (FMI 2). */
+    unsigned int (*elements_at)(unsigned int vr);
+    /* The independent variable's value reference (at or past AK_MAX_VARIABLES), readable as a
+     * Real value; NULL: none. */
+    const unsigned int *time_vr;
+    /* Logs why vr (vr_name[index]) names no Real value a get, or a set, can read or write. */
+    void (*refuse_real)(const ak_instance *instance, const char *function, size_t index,
+                        unsigned int vr, bool set);
+    /* The name of the variable vr names, in messages (FMI 3: its array's); NULL: the variable's. */
+    const char *(*name_of)(unsigned int vr);
+    /* True when n values (count_name) are the total elements of vr[0 .. n_vr - 1], else logs;
+     * NULL when the count is that of the value references (FMI 2). */
+    bool (*count_matches)(const ak_instance *instance, const char *function, const char *count_name,
+                          size_t n, size_t total, const unsigned int vr[], size_t n_vr);
     /* Sends a fully formatted message through the importer's logger (there is one). */
     void (*send)(const ak_instance *instance, ak_log_category category, ak_status status,
                  const char *message);
@@ -93,15 +110,13 @@ typedef enum {
     AK_N_REAL_ROLES
 } ak_real_role;
 
-/* A get of scalar value references split into runs of consecutive ones (at most AK_MAX_RUNS). */
-enum { AK_MAX_RUNS = 8 };
+/* The last get of FMI 2 scalars that was not one run, kept (ak_get_reals): importers ask the same
+ * at every step. */
 typedef struct {
     size_t nvr; /* 0: none kept */
     unsigned int vr[AK_MAX_VARIABLES];
-    size_t n_runs;
-    size_t lengths[AK_MAX_RUNS];
     unsigned int roles; /* 1 << role for each role read (ak_real_role) */
-} ak_get_runs;
+} ak_kept_get;
 
 struct ak_instance_s {
     const ak_layer *layer;
@@ -122,6 +137,9 @@ struct ak_instance_s {
      * references learns its roles from two entries per role. */
     unsigned char real_role[AK_MAX_VARIABLES];
     unsigned char roles_before[AK_N_REAL_ROLES][AK_MAX_VARIABLES + 1];
+    /* How many consecutive values each value reference names in the layer's calls
+     * (ak_layer.elements_at); 0: none. */
+    unsigned char elements[AK_MAX_VARIABLES];
     /* Values by value reference, input derivatives and the logger, as the model sees them. */
     ak_model_data data;
     /* When the outputs are computed (outputs.h); after a failed evaluation a read answers
@@ -132,9 +150,7 @@ struct ak_instance_s {
     const char *calling;
     /* FMU states made by this instance and not yet freed (fmu_states.c). */
     struct ak_fmu_state_s *live_states;
-    /* The last get of scalars that read a few runs rather than one (fmpy's record of every
-     * output skips the parameters among them): the same request next step costs one comparison. */
-    ak_get_runs last_runs;
+    ak_kept_get kept_get;
 };
 
 /* True when a message of this category reaches the importer (a category is never on without a
@@ -179,19 +195,42 @@ static inline bool ak_call_passes(const ak_instance *instance, const ak_function
            !ak_log_on(instance, AK_LOG_CALLS);
 }
 
+/* Logs "<function>: <pointer_name> is NULL with <count_name> = <n>"; false. */
+bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
+                    const char *count_name, const char *pointer_name);
+/* NULL is fine only when there is nothing to read or write. Inline: every get and set asks it. */
+static inline bool ak_given(const ak_instance *instance, const char *function, size_t n,
+                            const char *count_name, const void *pointer,
+                            const char *pointer_name) {
+    return n == 0 || pointer != NULL ||
+           ak_refuse_null(instance, function, n, count_name, pointer_name);
+}
+/* Logs "<function>: <name> is NULL"; false. */
+bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name);
+/* A pointer argument that must not be NULL (inline: fmi3DoStep asks it four times a step). */
+static inline bool ak_not_null(const ak_instance *instance, const char *function,
+                               const void *pointer, const char *name) {
+    return pointer != NULL || ak_refuse_null_pointer(instance, function, name);
+}
+/* The call of a getter or setter allowed, and vr and values given when there is anything to
+ * read or write (each refusal in the layer's words). Inline: every get and set asks it. */
+static AK_ALWAYS_INLINE bool ak_values_call_valid(const ak_instance *instance,
+                                                  const ak_function_rule *call,
+                                                  const unsigned int vr[], size_t nvr,
+                                                  const void *values, size_t n_values) {
+    return ak_call_allowed(instance, call) &&
+           ak_given(instance, call->name, nvr, instance->layer->vr_count_name, vr,
+                    instance->layer->vr_name) &&
+           ak_given(instance, call->name, n_values, instance->layer->values_count_name, values,
+                    instance->layer->values_name);
+}
+
 /* Makes a new instance of an embedding layer instance whose own fields (the callbacks its
  * send, allocate and release use) are set: copies the name, puts everything at its start.
  * False when the name cannot be allocated (nothing to free then; the layer says why, naming the
  * instance, which has no name yet). */
 bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char *function,
                        const char *name, ak_interface interface, bool has_logger, bool logging_on);
-
-/* Frees what the runtime allocated for the instance (its name, the FMU states the importer did
- * not free); the layer then frees its own instance. */
-void ak_instance_release(ak_instance *instance);
-
-/* Frees the FMU states the importer did not free (fmu_states.c). */
-void ak_free_all_fmu_states(ak_instance *instance);
 
 /* Puts the instance in its just-instantiated condition (instantiation and reset). */
 void ak_instance_reset(ak_instance *instance);
@@ -214,11 +253,6 @@ static inline unsigned int ak_real_roles_of_run(const ak_instance *instance, uns
     }
     return roles;
 }
-
-/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
- * initialization has not ended (the states follow the parameters until then); after that a
- * state is current without an evaluation. */
-bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr);
 
 /* Brings the output groups up to `upto` (main; main and lazy; every output) up to date with the
  * inputs, evaluating only what an input or parameter change made stale (traced in logCalls);

@@ -114,3 +114,8 @@ ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_r
         instance->interface == AK_MODEL_EXCHANGE ? AK_EVENT_MODE : AK_STEP_MODE;
     return AK_STATUS_OK;
 }
+
+void ak_instance_release(ak_instance *instance) {
+    ak_free_all_fmu_states(instance);
+    instance->layer->release(instance, instance->instance_name);
+}

@@ -3,7 +3,11 @@
  * calling FMI function's table entry (`call`) checks the call first (ak_call_allowed) and names the
  * function in its messages; one given only its name (`function`) is called by the layer after the
  * layer's own checks. Every function checks all of its arguments before it changes anything: a
- * refused call changes nothing. */
+ * refused call changes nothing.
+ *
+ * The runtime's files call one way, each only those before it: outputs.c, state_image.c <
+ * instance.c (the instance, logging, the call and argument checks, the evaluation) < values.c <
+ * derivatives.c < stepping.c, continuous.c, fmu_states.c < lifecycle.c. */
 #ifndef ANGULAR_KINEMATICS_RUNTIME_H
 #define ANGULAR_KINEMATICS_RUNTIME_H
 
@@ -12,6 +16,156 @@
 #include <stddef.h>
 
 #include "instance.h"
+
+/* --- values (values.c) ------------------------------------------------------------------------- */
+
+/* to[0 .. n - 1] := from[0 .. n - 1]. The usual counts of a get (a vector of 3, a quaternion,
+ * four vectors) with the count a constant: a few moves instead of a call of memcpy, element by
+ * element (gcc made a memcpy of 12 doubles a slow rep movs). */
+static AK_ALWAYS_INLINE void ak_copy_values(double *to, const double *from, size_t n) {
+    if (n == 12) { /* the most usual first: one comparison on its path */
+        for (size_t k = 0; k < 12; k++) {
+            to[k] = from[k];
+        }
+    } else if (n == 4) {
+        for (size_t k = 0; k < 4; k++) {
+            to[k] = from[k];
+        }
+    } else if (n == 3) {
+        for (size_t k = 0; k < 3; k++) {
+            to[k] = from[k];
+        }
+    } else {
+        memcpy(to, from, n * sizeof to[0]);
+    }
+}
+/* Whether a and b hold the same n value references (FMI 3's kept get asked again): a few compared
+ * element by element (a call of memcmp costs more), more with memcmp. */
+static AK_ALWAYS_INLINE bool ak_same_value_references(const unsigned int a[],
+                                                      const unsigned int b[], size_t n) {
+    if (n > 16) {
+        return memcmp(a, b, n * sizeof a[0]) == 0;
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (a[i] != b[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+/* After the input derivatives changed: recomputes data.any_input_derivative, and marks the
+ * outputs stale for a model whose outputs use them. */
+void ak_input_derivatives_changed(ak_instance *instance);
+/* A set of an input forgets its derivatives: the importer restated the value at a new point
+ * without a slope, so the input is held from there (docs/capabilities.md). */
+void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
+
+/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
+ * initialization has not ended (the states follow the parameters until then); after that a
+ * state is current without an evaluation. */
+bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr);
+/* Gets and sets of Real values: vr[i] names ak_instance.elements[vr[i]] consecutive values (FMI
+ * 2: one; FMI 3: an array), n_values in all (FMI 2: nvr). Each checks the call and every argument
+ * first and refuses in the layer's words (ak_layer); a refused call changes nothing. A get brings
+ * what it reads up to date (at most one evaluation per change); a set marks the outputs stale
+ * only when a bit changed. The layers' usual gets and sets (below, and FMI 3's) take a shorter
+ * path for the calls of every communication point and come here for anything else. */
+ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
+                        const unsigned int vr[], size_t nvr, double values[], size_t n_values);
+ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
+                        const unsigned int vr[], size_t nvr, const double values[],
+                        size_t n_values);
+/* FMI 2's gets and sets of Real values: a run of consecutive value references untraced (a run of
+ * inputs, finite, no input derivative to forget) directly, anything else by ak_get_values and
+ * ak_set_values. */
+ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
+                       const unsigned int vr[], size_t nvr, double value[]);
+ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
+                       const unsigned int vr[], size_t nvr, const double value[]);
+/* The variable of a scalar value reference, of the given type (Real or Integer), or NULL after
+ * logging why not. */
+const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
+                                       unsigned int vr, size_t index, ak_type type);
+/* The usual set of every communication point: n finite values of consecutive inputs from first
+ * (first + n <= n_inputs), untraced, no input derivative to forget; usual_n, the count the
+ * layer's importers usually set (every input of FMI 2, one vector of 3 of FMI 3), is copied
+ * unrolled. False (nothing stored) when a value is not finite: the caller takes its checked
+ * path. */
+bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
+                     size_t usual_n);
+/* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
+bool ak_parameter_settable(const ak_instance *instance, const char *function, size_t index,
+                           const ak_variable *variable, double value);
+/* Stores a checked value, traced in logCalls; outputs go stale only when a bit changed; an
+ * input's derivatives are forgotten. */
+void ak_store(ak_instance *instance, const char *function, unsigned int vr, double value);
+
+/* --- derivatives (derivatives.c) --------------------------------------------------------------- */
+
+/* The refusal of a function behind a capability flag the model does not claim. */
+ak_status ak_not_provided(const ak_instance *instance, const char *function, const char *flag);
+/* The first derivatives of the checked outputs vr (scalars), after bringing the outputs up to
+ * date. */
+ak_status ak_output_derivatives(ak_instance *instance, const char *function,
+                                const unsigned int vr[], size_t nvr, double value[]);
+/* sensitivity = J seed (directional) or J^T seed (adjoint: sensitivity accumulated, zeroed by
+ * the caller), J the rows of the checked unknowns (scalars: outputs or state derivatives) and the
+ * columns of the checked knowns (inputs or states). */
+ak_status ak_derivative(ak_instance *instance, const unsigned int unknowns[], size_t n_unknowns,
+                        const unsigned int knowns[], size_t n_knowns, const double seed[],
+                        double sensitivity[], bool adjoint);
+/* A checked unknown or known: of the given causality or (also, when not NULL) one of the states
+ * or their derivatives; logs naming list_name[index] when not. */
+bool ak_derivative_variable(const ak_instance *instance, const char *function,
+                            const char *list_name, size_t index, unsigned int vr,
+                            ak_causality causality, const unsigned int *also);
+
+/* --- co-simulation (stepping.c) ---------------------------------------------------------------- */
+
+/* A step from t by h (checked: finite, h > 0, t the current time, not past the stop time):
+ * the model's states advanced, the inputs moved along their derivatives, the time moved. A model
+ * with states or evaluate_in_step is evaluated at the end; when that fails the step is not taken
+ * (DISCARD, logged; the instance in the layer's step_discarded_state, every value as before). */
+ak_status ak_do_step(ak_instance *instance, const char *function, double t, double h);
+/* Input derivatives (FMI 2 only): of the inputs vr[i], order[i] 1 or 2, finite. */
+ak_status ak_set_input_derivatives(ak_instance *instance, const char *function,
+                                   const unsigned int vr[], size_t nvr, const int order[],
+                                   const double value[]);
+
+/* --- model exchange (continuous.c) ------------------------------------------------------------- */
+
+ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, double time);
+/* Arrays of the continuous states: count_name/array_name are the layer's argument names. */
+ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule *call,
+                                   const char *count_name, const char *array_name,
+                                   const double x[], size_t nx);
+ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
+                                   const char *count_name, const char *array_name, double x[],
+                                   size_t nx);
+ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
+                                   const char *count_name, const char *array_name,
+                                   double derivatives[], size_t nx);
+ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
+                          const char *count_name, const char *array_name, double nominals[],
+                          size_t nx);
+/* The models have no event indicators: n must be 0. */
+ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *call,
+                                 const char *count_name, size_t n);
+
+/* --- FMU states (fmu_states.c) ----------------------------------------------------------------- */
+
+/* *state: a state of this instance to overwrite, or NULL for a new one. */
+ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
+ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state);
+ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
+ak_status ak_serialized_fmu_state_size(ak_instance *instance, const ak_function_rule *call,
+                                       void *state, size_t *size);
+ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state,
+                                 unsigned char bytes[], size_t size);
+ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
+                                   const unsigned char bytes[], size_t size, void **state);
+/* Frees the FMU states the importer did not free. */
+void ak_free_all_fmu_states(ak_instance *instance);
 
 /* --- life cycle (lifecycle.c) ------------------------------------------------------------------ */
 
@@ -34,168 +188,8 @@ ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *cal
  * exchange) or Step Mode (co-simulation). A refusal of the parameters leaves the instance in
  * Initialization Mode, so that the importer can correct them and call again. */
 ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_rule *call);
-
-/* --- FMU states (fmu_states.c) ----------------------------------------------------------------- */
-
-/* *state: a state of this instance to overwrite, or NULL for a new one. */
-ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
-ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state);
-ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state);
-ak_status ak_serialized_fmu_state_size(ak_instance *instance, const ak_function_rule *call,
-                                       void *state, size_t *size);
-ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state,
-                                 unsigned char bytes[], size_t size);
-ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
-                                   const unsigned char bytes[], size_t size, void **state);
-
-/* --- co-simulation (stepping.c) ---------------------------------------------------------------- */
-
-/* A step from t by h (checked: finite, h > 0, t the current time, not past the stop time):
- * the model's states advanced, the inputs moved along their derivatives, the time moved. A model
- * with states or evaluate_in_step is evaluated at the end; when that fails the step is not taken
- * (DISCARD, logged; the instance in the layer's step_discarded_state, every value as before). */
-ak_status ak_do_step(ak_instance *instance, const char *function, double t, double h);
-/* Input derivatives (FMI 2 only): of the inputs vr[i], order[i] 1 or 2, finite. */
-ak_status ak_set_input_derivatives(ak_instance *instance, const char *function,
-                                   const unsigned int vr[], size_t nvr, const int order[],
-                                   const double value[]);
-
-/* After the input derivatives changed: recomputes data.any_input_derivative, and marks the
- * outputs stale for a model whose outputs use them. */
-void ak_input_derivatives_changed(ak_instance *instance);
-/* A set of an input forgets its derivatives: the importer restated the value at a new point
- * without a slope, so the input is held from there (docs/capabilities.md). */
-void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
-
-/* --- model exchange (continuous.c) ------------------------------------------------------------- */
-
-ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, double time);
-/* Arrays of the continuous states: count_name/array_name are the layer's argument names. */
-ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule *call,
-                                   const char *count_name, const char *array_name,
-                                   const double x[], size_t nx);
-ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
-                                   const char *count_name, const char *array_name, double x[],
-                                   size_t nx);
-ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
-                                   const char *count_name, const char *array_name,
-                                   double derivatives[], size_t nx);
-ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
-                          const char *count_name, const char *array_name, double nominals[],
-                          size_t nx);
-/* The models have no event indicators: n must be 0. */
-ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *call,
-                                 const char *count_name, size_t n);
-
-/* --- values (values.c) ------------------------------------------------------------------------- */
-
-/* Logs "<function>: <pointer_name> is NULL with <count_name> = <n>"; false. */
-bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
-                    const char *count_name, const char *pointer_name);
-/* NULL is fine only when there is nothing to read or write. Inline: every get and set asks it. */
-static inline bool ak_given(const ak_instance *instance, const char *function, size_t n,
-                            const char *count_name, const void *pointer,
-                            const char *pointer_name) {
-    return n == 0 || pointer != NULL ||
-           ak_refuse_null(instance, function, n, count_name, pointer_name);
-}
-/* Logs "<function>: <name> is NULL"; false. */
-bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name);
-/* A pointer argument that must not be NULL (inline: fmi3DoStep asks it four times a step). */
-static inline bool ak_not_null(const ak_instance *instance, const char *function,
-                               const void *pointer, const char *name) {
-    return pointer != NULL || ak_refuse_null_pointer(instance, function, name);
-}
-/* Logs the refusal of a NULL vr (or else value) with nvr > 0, in the layer's words; false. */
-bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
-                          bool vr_missing);
-/* The call of a getter or setter of scalar value references allowed, and vr and value given when
- * there is anything to read or write. Inline even where the compiler would share a copy: every
- * get and set of a communication point asks it. */
-static AK_ALWAYS_INLINE bool ak_scalar_call_valid(const ak_instance *instance,
-                                                  const ak_function_rule *call,
-                                                  const unsigned int vr[], size_t nvr,
-                                                  const void *value) {
-    return ak_call_allowed(instance, call) &&
-           (nvr == 0 || (vr != NULL && value != NULL) ||
-            ak_refuse_null_array(instance, call, nvr, vr == NULL));
-}
-/* to[0 .. n - 1] := from[0 .. n - 1]. The usual counts of a get (a vector of 3, a quaternion,
- * four vectors) with the count a constant: a few moves instead of a call of memcpy, element by
- * element (gcc made a memcpy of 12 doubles a slow rep movs). */
-static AK_ALWAYS_INLINE void ak_copy_values(double *to, const double *from, size_t n) {
-    if (n == 12) { /* the most usual first: one comparison on its path */
-        for (size_t k = 0; k < 12; k++) {
-            to[k] = from[k];
-        }
-    } else if (n == 4) {
-        for (size_t k = 0; k < 4; k++) {
-            to[k] = from[k];
-        }
-    } else if (n == 3) {
-        for (size_t k = 0; k < 3; k++) {
-            to[k] = from[k];
-        }
-    } else {
-        memcpy(to, from, n * sizeof to[0]);
-    }
-}
-/* Whether a and b hold the same n value references (a kept get asked again): a few compared
- * element by element (a call of memcmp costs more), more with memcmp. */
-static AK_ALWAYS_INLINE bool ak_same_value_references(const unsigned int a[],
-                                                      const unsigned int b[], size_t n) {
-    if (n > 16) {
-        return memcmp(a, b, n * sizeof a[0]) == 0;
-    }
-    for (size_t i = 0; i < n; i++) {
-        if (a[i] != b[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-/* Real gets and sets of scalar value references, each checking the call (ak_call_allowed) and
- * its arrays first (FMI 2; the FMI 3 layer expands
- * its arrays into them where it has no faster path). */
-ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
-                       const unsigned int vr[], size_t nvr, double value[]);
-ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
-                       const unsigned int vr[], size_t nvr, const double value[]);
-/* The variable of a scalar value reference, of the given type (Real or Integer), or NULL after
- * logging why not. */
-const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
-                                       unsigned int vr, size_t index, ak_type type);
-/* The usual set of every communication point: n finite values of consecutive inputs from first
- * (first + n <= n_inputs), untraced, no input derivative to forget; usual_n, the count the
- * layer's importers usually set (every input of FMI 2, one vector of 3 of FMI 3), is copied
- * unrolled. False (nothing stored) when a value is not finite: the caller takes its checked
- * path. */
-bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
-                     size_t usual_n);
-/* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
-bool ak_parameter_settable(const ak_instance *instance, const char *function, size_t index,
-                           const ak_variable *variable, double value);
-/* Stores a checked value, traced in logCalls; outputs go stale only when a bit changed. */
-void ak_store(ak_instance *instance, const char *function, unsigned int vr, double value);
-
-/* --- derivatives (derivatives.c) --------------------------------------------------------------- */
-
-/* The refusal of a function behind a capability flag the model does not claim. */
-ak_status ak_not_provided(const ak_instance *instance, const char *function, const char *flag);
-/* The first derivatives of the checked outputs vr (scalars), after bringing the outputs up to
- * date. */
-ak_status ak_output_derivatives(ak_instance *instance, const char *function,
-                                const unsigned int vr[], size_t nvr, double value[]);
-/* sensitivity = J seed (directional) or J^T seed (adjoint: sensitivity accumulated, zeroed by
- * the caller), J the rows of the checked unknowns (scalars: outputs or state derivatives) and the
- * columns of the checked knowns (inputs or states). */
-ak_status ak_derivative(ak_instance *instance, const unsigned int unknowns[], size_t n_unknowns,
-                        const unsigned int knowns[], size_t n_knowns, const double seed[],
-                        double sensitivity[], bool adjoint);
-/* A checked unknown or known: of the given causality or (also, when not NULL) one of the states
- * or their derivatives; logs naming list_name[index] when not. */
-bool ak_derivative_variable(const ak_instance *instance, const char *function,
-                            const char *list_name, size_t index, unsigned int vr,
-                            ak_causality causality, const unsigned int *also);
+/* Frees what the runtime allocated for the instance (its name, the FMU states the importer did
+ * not free); the layer then frees its own instance. */
+void ak_instance_release(ak_instance *instance);
 
 #endif

@@ -20,27 +20,6 @@ static bool times_close(double a, double b) {
     return fabs(a - b) <= TIME_RELATIVE_TOLERANCE * scale;
 }
 
-void ak_input_derivatives_changed(ak_instance *instance) {
-    if (AK_MODEL.outputs_use_input_derivatives) {
-        ak_instance_inputs_changed(instance);
-    }
-    instance->data.any_input_derivative = false;
-    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
-        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-            if (instance->data.input_derivatives[k][n] != 0.0) {
-                instance->data.any_input_derivative = true;
-            }
-        }
-    }
-}
-
-void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr) {
-    for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-        instance->data.input_derivatives[input_vr][n] = 0.0;
-    }
-    ak_input_derivatives_changed(instance);
-}
-
 /* Moves the inputs along their polynomials u + s du + s^2/2 d2u to the end of a step of size
  * h, and their first derivatives with them. Refuses (false, logged, nothing changed) when a value
  * would overflow. Marks the outputs stale only if an input changed. */

@@ -1,26 +1,14 @@
-/* Getters and setters of scalar value references, and the pieces the FMI 3 layer's array getters
- * and setters share with them. Every call checks all of its arguments before it touches a
- * value, so a refused call changes nothing. The variables are the model's: Real inputs, Real
- * outputs, and parameters of variability fixed (Real or Integer), which can be set only in
- * Instantiated and Initialization Mode. */
-#include <float.h>
+/* Gets and sets of Real values, for both FMI layers, and what an Integer get or set shares with
+ * them. A value reference of the layer names ak_instance.elements consecutive values (FMI 2: one;
+ * FMI 3: an array's); each call checks all of its arguments before it touches a value, so a
+ * refused call changes nothing. The variables are the model's: Real inputs, Real outputs, and
+ * parameters of variability fixed (Real or Integer), which can be set only in Instantiated and
+ * Initialization Mode. */
 #include <math.h>
 #include <string.h>
 
 #include "ak_bytes.h"
 #include "runtime.h"
-
-bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
-                    const char *count_name, const char *pointer_name) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
-           pointer_name, count_name, n);
-    return false;
-}
-
-bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, name);
-    return false;
-}
 
 /* Every value reference a value array can hold, in order: vr[] is a run first, first + 1, ..
  * exactly when it equals the slice of this table that starts at first (one memcmp). */
@@ -31,96 +19,25 @@ static const unsigned int EVERY_VALUE_REFERENCE[AK_MAX_VARIABLES] = {
     60, 61, 62, 63, 64, 65, 66, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77, 78, 79};
 _Static_assert(AK_MAX_VARIABLES == 80, "EVERY_VALUE_REFERENCE lists them all");
 
-/* Runs up to this long are compared element by element, longer ones with one memcmp. */
-enum { SHORT_RUN = 8 };
-
-/* True when vr holds first, first + 1, .. (nvr >= 1) within the value array. */
-static AK_ALWAYS_INLINE bool consecutive(const unsigned int vr[], size_t nvr) {
-    if (nvr == 0 || (size_t)vr[0] + nvr > AK_MAX_VARIABLES ||
-        vr[nvr - 1] != vr[0] + nvr - 1) { /* cheap, and enough to rule most others out */
-        return false;
+void ak_input_derivatives_changed(ak_instance *instance) {
+    if (AK_MODEL.outputs_use_input_derivatives) {
+        ak_instance_inputs_changed(instance);
     }
-    if (nvr > SHORT_RUN) {
-        return memcmp(vr, &EVERY_VALUE_REFERENCE[vr[0]], nvr * sizeof vr[0]) == 0;
-    }
-    bool run = true;
-    for (size_t i = 1; i + 1 < nvr; i++) {
-        run &= vr[i] == vr[0] + i;
-    }
-    return run;
-}
-
-/* ak_store_if_finite with the count a constant for a vector or a quaternion (as ak_copy_values). */
-static AK_ALWAYS_INLINE ak_store_result store_values(double *target, const double value[],
-                                                     size_t n) {
-    switch (n) {
-    case 3:
-        return ak_store_if_finite(target, value, 3);
-    case 4:
-        return ak_store_if_finite(target, value, 4);
-    default:
-        return ak_store_if_finite(target, value, n);
-    }
-}
-
-/* The length n (1 <= n <= nvr) of a run of consecutive value references that starts vr: found by
- * bisection on vr[k] == vr[0] + k, which holds for a prefix of k when vr increases (fmpy's record
- * of every output skips the parameters among them), then checked whole, so that any vr gives a
- * true run. A value reference past the table is a run of 1. */
-static size_t run_length(const unsigned int vr[], size_t nvr) {
-    size_t in_run = 1, past = nvr; /* vr[in_run - 1] is in the run; vr[past] is not (or none) */
-    while (in_run < past) {
-        const size_t mid = in_run + (past - in_run) / 2;
-        if (vr[mid] == vr[0] + mid) {
-            in_run = mid + 1;
-        } else {
-            past = mid;
-        }
-    }
-    return consecutive(vr, in_run) ? in_run : 1;
-}
-
-/* vr as at most AK_MAX_RUNS runs of consecutive value references into *runs, with their roles;
- * when it takes more, no runs (n_runs 0: value by value is cheaper) and the roles one by one. */
-static void split_into_runs(const ak_instance *instance, const unsigned int vr[], size_t nvr,
-                            ak_get_runs *runs) {
-    runs->n_runs = 0;
-    runs->roles = 0;
-    for (size_t i = 0; i < nvr; i += runs->lengths[runs->n_runs++]) {
-        if (runs->n_runs == AK_MAX_RUNS) {
-            runs->n_runs = 0;
-            runs->roles = 0;
-            for (size_t k = 0; k < nvr; k++) {
-                runs->roles |= 1u << ak_real_role_of(instance, vr[k]);
+    instance->data.any_input_derivative = false;
+    for (int k = 0; k < AK_MODEL.n_inputs; k++) {
+        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+            if (instance->data.input_derivatives[k][n] != 0.0) {
+                instance->data.any_input_derivative = true;
             }
-            return;
         }
-        const size_t n = run_length(&vr[i], nvr - i);
-        runs->lengths[runs->n_runs] = n;
-        runs->roles |= vr[i] < AK_MAX_VARIABLES ? ak_real_roles_of_run(instance, vr[i], n)
-                                                : 1u << AK_REAL_ABSENT;
     }
 }
 
-/* The runs of a get that is not one run (nvr > 0): the instance's last ones when it asks the same
- * again (importers ask the same at every step); else found in *scratch, and kept unless the call
- * is to be refused (a refused call changes nothing). */
-static const ak_get_runs *runs_of(ak_instance *instance, const unsigned int vr[], size_t nvr,
-                                  ak_get_runs *scratch) {
-    ak_get_runs *last = &instance->last_runs;
-    if (nvr == last->nvr && memcmp(vr, last->vr, nvr * sizeof vr[0]) == 0) {
-        return last;
+void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr) {
+    for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+        instance->data.input_derivatives[input_vr][n] = 0.0;
     }
-    split_into_runs(instance, vr, nvr, scratch);
-    if (nvr > AK_MAX_VARIABLES || (scratch->roles & (1u << AK_REAL_ABSENT)) != 0) {
-        return scratch;
-    }
-    memcpy(last->vr, vr, nvr * sizeof vr[0]);
-    memcpy(last->lengths, scratch->lengths, scratch->n_runs * sizeof last->lengths[0]);
-    last->n_runs = scratch->n_runs;
-    last->roles = scratch->roles;
-    last->nvr = nvr;
-    return last;
+    ak_input_derivatives_changed(instance);
 }
 
 static const char *type_name(ak_type type) {
@@ -177,13 +94,10 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
         instance->data.values[vr] = value;
         ak_instance_inputs_changed(instance);
     }
-}
-
-bool ak_refuse_null_array(const ak_instance *instance, const ak_function_rule *call, size_t nvr,
-                          bool vr_missing) {
-    const ak_layer *layer = instance->layer;
-    return ak_refuse_null(instance, call->name, nvr, layer->vr_count_name,
-                          vr_missing ? layer->vr_name : layer->values_name);
+    /* The importer restated the input at a new point without a slope: it is held from there. */
+    if (instance->data.any_input_derivative && vr < (unsigned int)AK_MODEL.n_inputs) {
+        ak_forget_input_derivatives(instance, vr);
+    }
 }
 
 bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr) {
@@ -198,11 +112,66 @@ bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int
     return false;
 }
 
+/* Runs up to this long are compared element by element, longer ones with one memcmp. */
+enum { SHORT_RUN = 8 };
+
+/* True when vr holds first, first + 1, .. (nvr >= 1) within the value array. */
+static AK_ALWAYS_INLINE bool consecutive(const unsigned int vr[], size_t nvr) {
+    if (nvr == 0 || (size_t)vr[0] + nvr > AK_MAX_VARIABLES ||
+        vr[nvr - 1] != vr[0] + nvr - 1) { /* cheap, and enough to rule most others out */
+        return false;
+    }
+    if (nvr > SHORT_RUN) {
+        return memcmp(vr, &EVERY_VALUE_REFERENCE[vr[0]], nvr * sizeof vr[0]) == 0;
+    }
+    bool run = true;
+    for (size_t i = 1; i + 1 < nvr; i++) {
+        run &= vr[i] == vr[0] + i;
+    }
+    return run;
+}
+
+/* ak_store_if_finite with the count a constant for a vector or a quaternion (as ak_copy_values). */
+static AK_ALWAYS_INLINE ak_store_result store_values(double *target, const double value[],
+                                                     size_t n) {
+    switch (n) {
+    case 3:
+        return ak_store_if_finite(target, value, 3);
+    case 4:
+        return ak_store_if_finite(target, value, 4);
+    default:
+        return ak_store_if_finite(target, value, n);
+    }
+}
+
+/* Logs why vr (vr_name[i]) names no Real value to get or set: the layer's words, FMI 2's by
+ * default. */
+static void refuse_real(const ak_instance *instance, const char *function, size_t i,
+                        unsigned int vr, bool set) {
+    if (instance->layer->refuse_real != NULL) {
+        instance->layer->refuse_real(instance, function, i, vr, set);
+    } else {
+        (void)ak_variable_of_type(instance, function, vr, i, AK_TYPE_REAL);
+    }
+}
+
+static bool is_time(const ak_instance *instance, unsigned int vr) {
+    return instance->layer->time_vr != NULL && vr == *instance->layer->time_vr;
+}
+
+/* Whether the n values of the layer's calls (values_count_name) are those of vr[] (total). */
+static bool count_matches(const ak_instance *instance, const char *function,
+                          const unsigned int vr[], size_t nvr, size_t n, size_t total) {
+    return n == total || instance->layer->count_matches == NULL ||
+           instance->layer->count_matches(instance, function, instance->layer->values_count_name,
+                                          n, total, vr, nvr);
+}
+
 /* Brings up to date what a get of these roles reads: nothing for inputs, parameters and states
  * after initialization, the main group for its outputs (and for states that still follow their
  * start parameters), both groups for a lazy output, everything for a derived one. */
-static ak_status update_for(ak_instance *instance, unsigned int roles, const unsigned int vr[],
-                            size_t nvr) {
+static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int roles,
+                                             const unsigned int vr[], size_t nvr) {
     if (roles & (1u << AK_REAL_DERIVED_OUTPUT)) {
         return ak_instance_update(instance, AK_GROUP_DERIVED);
     }
@@ -215,44 +184,35 @@ static ak_status update_for(ak_instance *instance, unsigned int roles, const uns
     return AK_STATUS_OK;
 }
 
-/* ak_get_reals but its usual path: every argument checked. Out of line, so that the usual path
- * stays a small function. */
-AK_NOINLINE static ak_status get_reals_checked(ak_instance *instance, const ak_function_rule *call,
-                                               const unsigned int vr[], size_t nvr,
-                                               double value[]) {
-    if (!ak_scalar_call_valid(instance, call, vr, nvr, value)) {
+/* Out of line: the layers' usual gets stay small functions. */
+AK_NOINLINE ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
+                                    const unsigned int vr[], size_t nvr, double values[],
+                                    size_t n_values) {
+    if (!ak_values_call_valid(instance, call, vr, nvr, values, n_values)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
-    /* One bit per role read: the highest decides what must be brought up to date (nothing for
-     * inputs, parameters and states after initialization, the main group for its outputs, both groups for a lazy output).
-     * Consecutive value references are the usual get: their roles come from the run's ends and
-     * their values from one copy. */
-    const bool run = consecutive(vr, nvr);
-    /* Else a few runs (fmpy's record of every output), each read like one. */
-    ak_get_runs scratch;
-    const ak_get_runs *runs = run || nvr == 0 ? NULL : runs_of(instance, vr, nvr, &scratch);
-    const unsigned int roles = run ? ak_real_roles_of_run(instance, vr[0], nvr)
-                               : runs != NULL ? runs->roles
-                                              : 0u;
-    if (roles & (1u << AK_REAL_ABSENT)) { /* the first such value reference, and why */
-        size_t i = 0;
-        while (ak_real_role_of(instance, vr[i]) != AK_REAL_ABSENT) {
-            i++;
+    unsigned int roles = 0;
+    size_t total = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        const ak_real_role role = ak_real_role_of(instance, vr[i]);
+        if ((role == AK_REAL_ABSENT || instance->elements[vr[i]] == 0) && !is_time(instance, vr[i])) {
+            refuse_real(instance, call->name, i, vr[i], false);
+            return AK_STATUS_ERROR;
         }
-        (void)ak_variable_of_type(instance, function, vr[i], i, AK_TYPE_REAL);
+        roles |= 1u << role; /* an array's first value stands for it: one variable, one role */
+        total += role == AK_REAL_ABSENT ? 1u : instance->elements[vr[i]]; /* time: one value */
+    }
+    if (!count_matches(instance, call->name, vr, nvr, n_values, total)) {
         return AK_STATUS_ERROR;
     }
     const ak_status status = update_for(instance, roles, vr, nvr);
-    if (run) {
-        memcpy(value, &instance->data.values[vr[0]], nvr * sizeof value[0]);
-    } else if (runs != NULL && runs->n_runs > 0) {
-        for (size_t r = 0, i = 0; r < runs->n_runs; i += runs->lengths[r++]) {
-            memcpy(&value[i], &instance->data.values[vr[i]], runs->lengths[r] * sizeof value[0]);
+    for (size_t i = 0, k = 0; i < nvr; i++) {
+        if (vr[i] >= AK_MAX_VARIABLES) { /* checked above: time, past the value array */
+            values[k++] = instance->time;
+            continue;
         }
-    } else {
-        for (size_t i = 0; i < nvr; i++) {
-            value[i] = instance->data.values[vr[i]];
+        for (unsigned int e = 0; e < instance->elements[vr[i]]; e++) {
+            values[k++] = instance->data.values[vr[i] + e];
         }
     }
     return status;
@@ -280,29 +240,143 @@ static AK_ALWAYS_INLINE bool get_run(ak_instance *instance, const unsigned int v
  * takes the same path with a variable count. */
 enum { USUAL_RUN = 12 };
 
+/* A get of a few runs (fmpy's record of every output skips the parameters among them) asked
+ * again, as the instance kept it: its roles, its values gathered. False for any other get. */
+static bool get_kept(ak_instance *instance, const unsigned int vr[], size_t nvr, double value[],
+                     ak_status *status) {
+    const ak_kept_get *kept = &instance->kept_get;
+    if (nvr == 0 || nvr != kept->nvr || !ak_same_value_references(vr, kept->vr, nvr)) {
+        return false;
+    }
+    *status = update_for(instance, kept->roles, vr, nvr);
+    for (size_t i = 0; i < nvr; i++) {
+        value[i] = instance->data.values[vr[i]];
+    }
+    return true;
+}
+
+/* Keeps a get that ak_get_values answered (every value reference known) for get_kept. */
+static void keep_get(ak_instance *instance, const unsigned int vr[], size_t nvr) {
+    ak_kept_get *kept = &instance->kept_get;
+    kept->roles = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        kept->roles |= 1u << ak_real_role_of(instance, vr[i]);
+    }
+    memcpy(kept->vr, vr, nvr * sizeof vr[0]);
+    kept->nvr = nvr;
+}
+
 ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, double value[]) {
     /* The usual gets, untraced: consecutive value references of known variables, or the same
-     * runs as the last get of a few runs (kept only when every value reference was known). */
-    if (ak_call_passes(instance, call) && vr != NULL && value != NULL) {
-        ak_status status;
-        if (nvr == USUAL_RUN ? get_run(instance, vr, USUAL_RUN, value, &status)
-                             : get_run(instance, vr, nvr, value, &status)) {
-            return status;
+     * few runs as the last get. */
+    ak_status status;
+    const bool untraced = ak_call_passes(instance, call) && vr != NULL && value != NULL;
+    if (untraced && (nvr == USUAL_RUN ? get_run(instance, vr, USUAL_RUN, value, &status)
+                                      : get_run(instance, vr, nvr, value, &status) ||
+                                            get_kept(instance, vr, nvr, value, &status))) {
+        return status;
+    }
+    status = ak_get_values(instance, call, vr, nvr, value, nvr);
+    if (untraced && status != AK_STATUS_ERROR && nvr <= AK_MAX_VARIABLES) {
+        keep_get(instance, vr, nvr);
+    }
+    return status;
+}
+
+/* Whether vr[i] names values a set may write (inputs or parameters); else logs why not. */
+static bool settable(const ak_instance *instance, const char *function, size_t i,
+                     unsigned int vr) {
+    const ak_real_role role = ak_real_role_of(instance, vr);
+    if (role == AK_REAL_ABSENT || instance->elements[vr] == 0) {
+        refuse_real(instance, function, i, vr, true);
+        return false;
+    }
+    if (role == AK_REAL_INPUT || role == AK_REAL_PARAMETER) {
+        return true;
+    }
+    const ak_causality causality = AK_MODEL.variables[vr].causality;
+    const char *name = instance->layer->name_of != NULL ? instance->layer->name_of(vr)
+                                                        : AK_MODEL.variables[vr].name;
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+           "%s: %s[%zu] = %u is %s, %s %s%s: only inputs and parameters can be set; no value set",
+           function, instance->layer->vr_name, i, vr, name,
+           causality == AK_CAUSALITY_OUTPUT ? "an" : "a", ak_causality_name(causality),
+           ak_state_index(AK_MODEL.state_vrs, vr) >= 0 ? instance->layer->state_setter_note : "");
+    return false;
+}
+
+/* Whether the values values[k ..] of vr[i] may be stored: finite, and a parameter's in its range
+ * and settable now; else logs the first that is not. */
+static bool storable(const ak_instance *instance, const char *function, size_t i,
+                     unsigned int vr, const double values[], size_t k) {
+    const ak_layer *layer = instance->layer;
+    for (unsigned int e = 0; e < instance->elements[vr]; e++) {
+        const ak_variable *variable = &AK_MODEL.variables[vr + e];
+        const double value = values[k + e];
+        if (!isfinite(value) && layer->elements_at != NULL) { /* its place in values[] too */
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: %s = %g (%s[%zu], %s[%zu] = %u) is not finite; no value set", function,
+                   variable->name, value, layer->values_name, k + e, layer->vr_name, i, vr);
+            return false;
         }
-        if (!consecutive(vr, nvr)) {
-            const ak_get_runs *last = &instance->last_runs;
-            if (nvr > 0 && nvr == last->nvr && last->n_runs > 0 &&
-                ak_same_value_references(vr, last->vr, nvr)) {
-                status = update_for(instance, last->roles, vr, nvr);
-                for (size_t r = 0, i = 0; r < last->n_runs; i += last->lengths[r++]) {
-                    ak_copy_values(&value[i], &instance->data.values[vr[i]], last->lengths[r]);
-                }
-                return status;
-            }
+        if (!isfinite(value)) {
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: %s = %g (%s[%zu] = %u) is not finite; no value set", function,
+                   variable->name, value, layer->vr_name, i, vr);
+            return false;
+        }
+        if (variable->causality == AK_CAUSALITY_PARAMETER &&
+            !ak_parameter_settable(instance, function, i, variable, value)) {
+            return false;
         }
     }
-    return get_reals_checked(instance, call, vr, nvr, value);
+    return true;
+}
+
+/* Whether every value of a set may be stored, checked in the order the layer's messages are
+ * numbered in: each value reference and its values in turn (FMI 2), or every value reference,
+ * then the count, then the values (FMI 3); logs the first refusal. */
+static bool check_set(const ak_instance *instance, const char *function, const unsigned int vr[],
+                      size_t nvr, const double values[], size_t n_values) {
+    const bool counted = instance->layer->count_matches != NULL;
+    size_t total = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        if (!settable(instance, function, i, vr[i]) ||
+            (!counted && !storable(instance, function, i, vr[i], values, total))) {
+            return false;
+        }
+        total += instance->elements[vr[i]];
+    }
+    if (!counted) {
+        return true;
+    }
+    if (!count_matches(instance, function, vr, nvr, n_values, total)) {
+        return false;
+    }
+    for (size_t i = 0, k = 0; i < nvr; k += instance->elements[vr[i++]]) {
+        if (!storable(instance, function, i, vr[i], values, k)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Every argument checked first, then each value stored (traced, its input derivatives forgotten).
+ * Out of line: the layers' usual sets stay small functions. */
+AK_NOINLINE ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
+                                    const unsigned int vr[], size_t nvr, const double values[],
+                                    size_t n_values) {
+    if (!ak_values_call_valid(instance, call, vr, nvr, values, n_values) ||
+        !check_set(instance, call->name, vr, nvr, values, n_values)) {
+        return AK_STATUS_ERROR;
+    }
+    for (size_t i = 0, k = 0; i < nvr; i++) {
+        for (unsigned int e = 0; e < instance->elements[vr[i]]; e++) {
+            ak_store(instance, call->name, vr[i] + e, values[k++]);
+        }
+    }
+    return AK_STATUS_OK;
 }
 
 bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
@@ -316,93 +390,6 @@ bool ak_store_inputs(ak_instance *instance, unsigned int first, const double val
         ak_instance_inputs_changed(instance);
     }
     return stored != AK_STORE_REFUSED;
-}
-
-/* The usual set: every value reference an input (value references 0 .. n_inputs - 1) and every
- * value finite. Accumulated without a branch per value. */
-static bool only_finite_inputs(const unsigned int vr[], size_t nvr, const double value[]) {
-    const unsigned int n_inputs = (unsigned int)AK_MODEL.n_inputs;
-    bool ok = true;
-    for (size_t i = 0; i < nvr; i++) {
-        ok &= (vr[i] < n_inputs) & (fabs(value[i]) <= DBL_MAX);
-    }
-    return ok;
-}
-
-/* Each value of a set that is not the usual one, checked in turn: the first bad one is logged
- * and refused. */
-static bool check_each_real(const ak_instance *instance, const char *function,
-                            const unsigned int vr[], size_t nvr, const double value[]) {
-    for (size_t i = 0; i < nvr; i++) {
-        if (ak_real_role_of(instance, vr[i]) == AK_REAL_INPUT && isfinite(value[i])) {
-            continue;
-        }
-        const ak_variable *variable = ak_variable_of_type(instance, function, vr[i], i, AK_TYPE_REAL);
-        if (variable == NULL) {
-            return false;
-        }
-        if (variable->causality == AK_CAUSALITY_OUTPUT ||
-            variable->causality == AK_CAUSALITY_LOCAL) {
-            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                   "%s: %s[%zu] = %u is %s, %s %s%s: only inputs and parameters can be set; no "
-                   "value set",
-                   function, instance->layer->vr_name, i, vr[i], variable->name,
-                   variable->causality == AK_CAUSALITY_OUTPUT ? "an" : "a",
-                   ak_causality_name(variable->causality),
-                   ak_state_index(AK_MODEL.state_vrs, vr[i]) >= 0
-                       ? instance->layer->state_setter_note
-                       : "");
-            return false;
-        }
-        if (!isfinite(value[i])) {
-            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                   "%s: %s = %g (%s[%zu] = %u) is not finite; no value set", function,
-                   variable->name, value[i], instance->layer->vr_name, i, vr[i]);
-            return false;
-        }
-        if (variable->causality == AK_CAUSALITY_PARAMETER &&
-            !ak_parameter_settable(instance, function, i, variable, value[i])) {
-            return false;
-        }
-    }
-    return true;
-}
-
-/* ak_set_reals but its usual path. Out of line, so that the usual path stays a small function. */
-AK_NOINLINE static ak_status set_reals_checked(ak_instance *instance, const ak_function_rule *call,
-                                               const unsigned int vr[], size_t nvr,
-                                               const double value[]) {
-    if (!ak_scalar_call_valid(instance, call, vr, nvr, value)) {
-        return AK_STATUS_ERROR;
-    }
-    const char *const function = call->name;
-    /* Untraced, and no input derivative to forget: a usual set stores values, nothing more. */
-    const bool trace = ak_log_on(instance, AK_LOG_CALLS);
-    const bool plain_store = !trace && !instance->data.any_input_derivative;
-    /* (A run of finite inputs, untraced, took ak_set_reals' usual path: not here.) */
-    const bool usual = only_finite_inputs(vr, nvr, value);
-    if (!usual && !check_each_real(instance, function, vr, nvr, value)) {
-        return AK_STATUS_ERROR;
-    }
-    if (usual && plain_store) {
-        /* Store every value; the outputs go stale only if one differs. */
-        bool changed = false;
-        for (size_t i = 0; i < nvr; i++) {
-            changed |= !ak_same_double(instance->data.values[vr[i]], value[i]);
-            instance->data.values[vr[i]] = value[i];
-        }
-        if (changed) {
-            ak_instance_inputs_changed(instance);
-        }
-        return AK_STATUS_OK;
-    }
-    for (size_t i = 0; i < nvr; i++) {
-        ak_store(instance, function, vr[i], value[i]);
-        if (instance->data.any_input_derivative && vr[i] < (unsigned int)AK_MODEL.n_inputs) {
-            ak_forget_input_derivatives(instance, vr[i]);
-        }
-    }
-    return AK_STATUS_OK;
 }
 
 /* True when vr is a run first, first + 1, .. of inputs (value references 0 .. n_inputs - 1). */
@@ -423,5 +410,5 @@ ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
         ak_store_inputs(instance, vr[0], value, nvr, n_inputs)) {
         return AK_STATUS_OK;
     }
-    return set_reals_checked(instance, call, vr, nvr, value);
+    return ak_set_values(instance, call, vr, nvr, value, nvr);
 }
