@@ -65,7 +65,8 @@ def copy_files(source, target, name, like, old_prefix, prefix):
     and C prefix replaced, in the file names too."""
     for path in sorted(source.rglob("*")):
         relative = path.relative_to(source)
-        if path.is_dir() or relative == pathlib.Path("description.py") or "__pycache__" in relative.parts:
+        if (path.is_dir() or relative == pathlib.Path("description.py") or
+                "__pycache__" in relative.parts):
             continue
         out = target / re.sub(named(like), name, str(relative))
         out.parent.mkdir(parents=True, exist_ok=True)
