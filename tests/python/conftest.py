@@ -335,16 +335,11 @@ class Instance:
         int_values = (ctypes.c_int * max(len(integers), 1))()
         int_status = self.call("fmi2GetInteger", (ctypes.c_uint * max(len(integers), 1))(*integers),
                                len(integers), int_values)
-        state = ctypes.c_void_p()
-        assert self.call("fmi2GetFMUstate", ctypes.byref(state)) == 0, self.messages[-1:]
-        size = ctypes.c_size_t()
-        assert self.call("fmi2SerializedFMUstateSize", state, ctypes.byref(size)) == 0
-        image = (ctypes.c_char * size.value)()
-        assert self.call("fmi2SerializeFMUstate", state, image, size.value) == 0
-        assert self.call("fmi2FreeFMUstate", ctypes.byref(state)) == 0
+        from fmi_layers import Layer
+        image = Layer(2).state_image(self)
         del self.messages[n_messages:]
         bits = np.array(real_values[:], dtype=float).view(np.uint64).tolist()
-        return real_status, bits, int_status, list(int_values), bytes(image)
+        return real_status, bits, int_status, list(int_values), image
 
     def free(self):
         if self.component is not None:

@@ -17,6 +17,7 @@ from fmpy import extract, read_model_description
 from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 from codegen import project
+from fmi_layers import Layer
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 STATUS = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal"}
@@ -143,15 +144,9 @@ class Instance3:
         ints = (ctypes.c_int64 * max(len(enums), 1))()
         int_status = self.call("fmi3GetInt64", vrs(self.vr[n] for n in enums), len(enums), ints,
                                len(enums))
-        state = ctypes.c_void_p()
-        assert self.call("fmi3GetFMUState", ctypes.byref(state)) == OK, self.messages[-1:]
-        size = ctypes.c_size_t()
-        assert self.call("fmi3SerializedFMUStateSize", state, ctypes.byref(size)) == OK
-        image = (ctypes.c_uint8 * size.value)()
-        assert self.call("fmi3SerializeFMUState", state, image, size.value) == OK
-        assert self.call("fmi3FreeFMUState", ctypes.byref(state)) == OK
+        image = Layer(3).state_image(self)
         del self.messages[n_messages:]
-        return status, bits, int_status, list(ints), bytes(image)
+        return status, bits, int_status, list(ints), image
 
     def free(self):
         if self.component is not None:

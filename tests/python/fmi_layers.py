@@ -108,6 +108,14 @@ class Layer:
         assert instance.call(self.serialize, state, buffer, size.value) == 0
         return bytes(buffer)
 
+    def state_image(self, instance):
+        """The serialized bytes of the instance's FMU state now (the state got, serialized and
+        freed)."""
+        state = self.get_state(instance)
+        image = self.serialized(instance, state)
+        assert instance.call(self.free, ctypes.byref(state)) == 0
+        return image
+
     def deserialized(self, instance, data):
         """(status, state) of deserializing the bytes."""
         state = ctypes.c_void_p()
