@@ -81,7 +81,7 @@ function(ak_add_fmu3 model)
        OUTPUT_VARIABLE _figures)
   set(_ls_ref_dir "${_folder}/ls_ref")
   set(_ls_ref "${_ls_ref_dir}/fmi-ls-manifest.xml" "${_ls_ref_dir}/${model}_in.csv"
-      "${_ls_ref_dir}/${model}_out.csv")
+      "${_ls_ref_dir}/${model}_out.csv" "${_ls_ref_dir}/${model}.exp")
   set(_fmu "${AK_DIST_DIR}/fmi3/${model}.fmu")
   add_custom_command(
     OUTPUT "${_fmu}"

@@ -1,8 +1,10 @@
 """The reference result each FMU carries in extra/org.fmi-standard.fmi-ls-ref/ (FMI-LS-REF
 1.0.0-alpha.1), kept in each model's folder (fmu_src/models/<Model>/ls_ref/, fmi3/ls_ref/) by
-scripts/make_ls_ref.py. The committed files are what the
-built FMUs compute; each manifest names its experiment's inputs and result; examples/ci_check.py
---ls-ref passes on an FMU carrying them, fails on a moved value and reports an FMU carrying none."""
+scripts/make_ls_ref.py. The committed files are what the built FMUs compute; every packaged
+manifest is valid against the schema copies of tests/schemas/fmi-ls-ref/ and relates the
+experiment, its inputs, its result and the FMU's page by role; examples/ci_check.py --ls-ref
+passes on an FMU carrying them, takes the experiment's settings from its file, fails on a moved
+value and reports an FMU carrying none."""
 import pathlib
 import subprocess
 import sys
@@ -13,8 +15,10 @@ import numpy as np
 import pytest
 from fmpy import read_model_description
 
-from examples.cross_check import read_csv
-from examples.ls_ref import FOLDER, LS
+from examples.cross_check import ABSOLUTE, RELATIVE, read_csv
+from examples.ls_ref import FOLDER, LS, member
+
+from ls_ref_schema import MANIFEST_SCHEMAS, experiments_errors, manifest_errors
 
 from codegen.project import MODELS
 
@@ -65,7 +69,7 @@ def test_committed_files_are_what_the_fmus_compute(tmp_path, fmu_path, report):
     made = sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*") if p.is_file())
     kept = sorted(pathlib.Path(version, model, p.name) for version, model in CASES
                   for p in committed(version, model).iterdir())
-    assert made == kept and len(made) == 18
+    assert made == kept and len(made) == 24
     stale, largest = [], 0.0
     for path in made:
         if path.suffix != ".csv":
@@ -84,28 +88,76 @@ def test_committed_files_are_what_the_fmus_compute(tmp_path, fmu_path, report):
 
 
 @pytest.mark.parametrize("version,model", CASES)
-def test_manifest_names_the_experiment(version, model):
+def test_manifest_relates_the_files_by_role(version, model):
     folder = committed(version, model)
     root = ET.parse(folder / "fmi-ls-manifest.xml").getroot()
     assert root.tag == "fmiReferences"
     assert root.get(LS + "fmi-ls-name") == "org.fmi-standard.fmi-ls-ref"
     assert root.get(LS + "fmi-ls-version") == "1.0.0-alpha.1"
-    experiment = root.find("Experiment")
+    roles = {r.get("role"): (r.get("source"), r.get("type")) for r in root.findall("Related")}
+    assert roles == {"experiment": (f"{model}.exp", "application/x-ma-ls-experiments"),
+                     "testcase": (f"{model}_in.csv", "text/csv"),
+                     "result": (f"{model}_out.csv", "text/csv"),
+                     "document": ("../../documentation/index.html", "text/html")}
+    experiment = ET.parse(folder / f"{model}.exp").getroot().find("Experiment")
+    assert experiment.get("name") == "cs"
     stimuli = experiment.find("Stimuli").get("source")
     result = experiment.find("References").get("source")
-    assert (stimuli, result) == (f"{model}_in.csv", f"{model}_out.csv")
-    roles = {r.get("source"): r.get("role") for r in root.findall("Related")}
-    assert roles == {stimuli: "testcase", result: "result"}
+    assert (stimuli, result) == (roles["testcase"][0], roles["result"][0])
     in_names, inputs = read_csv(folder / stimuli)
     out_names, outputs = read_csv(folder / result)
     assert np.array_equal(inputs[:, 0], outputs[:, 0]) and len(inputs) == 401
     assert [float(experiment.get(k)) for k in ("startTime", "stopTime", "stepSize")] == [
         inputs[0, 0], inputs[-1, 0], 0.01]
+    # one tolerance stands for both parts of cross_check.py's
+    assert float(experiment.get("tolerance")) == RELATIVE == ABSOLUTE
     description = read_model_description(str(dist_fmu(version, model)))
     header = (folder / stimuli).read_text().splitlines()[0]
     assert header == ",".join(f'"{n}"' for n in ["time"] + [
         v.name for v in description.modelVariables if v.causality == "input"])
     assert 1 < len(out_names) - 1 <= 10
+
+
+def packaged_fmus():
+    return sorted((ROOT / "dist").glob("*.fmu")) + sorted((ROOT / "dist" / "fmi3").glob("*.fmu"))
+
+
+def test_packaged_manifests_are_valid_against_the_schemas():
+    """Every FMU of dist/ and dist/fmi3/: its manifest against FMI-LS-REF's current schema and
+    1.0.0-alpha.1's, its experiment file against 1.0.0-alpha.1's experiments schema, and every
+    file the manifest relates is in the FMU."""
+    fmus = packaged_fmus()
+    assert len(fmus) == 2 * len(MODELS)
+    invalid, absent = {}, {}
+    for fmu in fmus:
+        with zipfile.ZipFile(fmu) as archive:
+            names = set(archive.namelist())
+            manifest = archive.read(FOLDER + "fmi-ls-manifest.xml")
+            sources = {r.get("role"): r.get("source") for r in ET.fromstring(manifest).findall("Related")}
+            absent[fmu.name] = sorted(s for s in sources.values() if member(s) not in names)
+            experiments = archive.read(member(sources["experiment"]))
+        for schema in MANIFEST_SCHEMAS:
+            invalid[f"{fmu} against {schema}"] = manifest_errors(manifest, schema)
+        invalid[f"{fmu} {sources['experiment']}"] = experiments_errors(experiments)
+    assert not any(invalid.values()), invalid
+    assert not any(absent.values()), absent
+
+
+@pytest.mark.parametrize("plant,expected", [
+    (lambda text: text.replace("    <Related", '    <Experiment name="reference"/>\n    <Related', 1),
+     "Element 'Experiment': This element is not expected"),
+    (lambda text: text.replace("information on related files", "reference stimuli and results"),
+     "fmi-ls-description"),
+    (lambda text: text.replace('role="document"', 'role="documentation"'),
+     "attribute 'role': [facet 'pattern'] The value 'documentation' is not accepted"),
+])
+def test_schemas_refuse_a_planted_fault(plant, expected):
+    """A fault planted in a committed manifest: both schemas name it."""
+    text = (committed("fmi3", "EulerRates") / "fmi-ls-manifest.xml").read_text()
+    assert manifest_errors(text.encode(), MANIFEST_SCHEMAS[0]) == []
+    for schema in MANIFEST_SCHEMAS:
+        errors = manifest_errors(plant(text).encode(), schema)
+        assert any(expected in e for e in errors), (schema, errors)
 
 
 @pytest.mark.parametrize("version,model", CASES)
@@ -115,17 +167,20 @@ def test_ci_check_passes_on_an_fmu_carrying_its_reference(tmp_path, version, mod
     assert "largest deviation 0\n" in done.stdout and "PASSED" in done.stdout
 
 
+def move(name, text):
+    """q[2] of AttitudePropagator's FMI 3 result at t = 1 s, 1e-9 relative off."""
+    if not name.endswith("_out.csv"):
+        return text
+    lines = text.splitlines()
+    cells = lines[101].split(",")  # t = 1 s
+    values = cells[1].split()
+    values[1] = repr(float(values[1]) * (1 + 1e-9))  # q[2]
+    cells[1] = " ".join(values)
+    lines[101] = ",".join(cells)
+    return "\n".join(lines) + "\n"
+
+
 def test_ci_check_fails_on_a_moved_value_and_without_a_reference(tmp_path, report):
-    def move(name, text):
-        if not name.endswith("_out.csv"):
-            return text
-        lines = text.splitlines()
-        cells = lines[101].split(",")  # t = 1 s
-        values = cells[1].split()
-        values[1] = repr(float(values[1]) * (1 + 1e-9))  # q[2]
-        cells[1] = " ".join(values)
-        lines[101] = ",".join(cells)
-        return "\n".join(lines) + "\n"
     fmu = carrying(tmp_path, "fmi3", "AttitudePropagator", move)
     done = run(ROOT / "examples" / "ci_check.py", "--ls-ref", fmu)
     report(f"a 1e-9 relative change of one carried value: exit {done.returncode}")
@@ -134,6 +189,24 @@ def test_ci_check_fails_on_a_moved_value_and_without_a_reference(tmp_path, repor
     bare = without_ls_ref(dist_fmu("fmi2", "EulerRates"), tmp_path / "bare.fmu")
     done = run(ROOT / "examples" / "ci_check.py", "--ls-ref", bare)
     assert done.returncode == 2 and "carries no extra/org.fmi-standard.fmi-ls-ref/" in done.stdout
+
+
+def test_ci_check_takes_the_settings_from_the_experiment_file(tmp_path):
+    """The tolerance and the time grid come from <Model>.exp: a tolerance of 1e-6 passes the
+    value moved by 1e-9; a stepSize of 0.02 makes the carried inputs no longer its grid."""
+    def loose(name, text):
+        return move(name, text).replace('tolerance="1e-12"', 'tolerance="1e-06"')
+    done = run(ROOT / "examples" / "ci_check.py", "--ls-ref",
+               carrying(tmp_path, "fmi3", "AttitudePropagator", loose))
+    assert done.returncode == 0 and "tolerance per value 1e-06" in done.stdout, done.stdout
+
+    def coarse(name, text):
+        return text.replace('stepSize="0.01"', 'stepSize="0.02"')
+    done = run(ROOT / "examples" / "ci_check.py", "--ls-ref",
+               carrying(tmp_path, "fmi2", "EulerRates", coarse))
+    assert done.returncode == 2, done.stdout
+    assert ("EulerRates_in.csv (0 to 4, 401 rows) are not the experiment's startTime 0, "
+            "stopTime 4, stepSize 0.02") in done.stdout
 
 
 @pytest.mark.parametrize("version,model", CASES)
