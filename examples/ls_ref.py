@@ -57,8 +57,10 @@ def experiment_settings(fmu, text, sources):
         try:
             settings[key] = float(experiment.get(attribute))
         except (TypeError, ValueError):
-            return f"{fmu}: the experiment's {attribute} is {experiment.get(attribute)!r}, no number"
-    for key, element, role in (("inputs", "Stimuli", "testcase"), ("result", "References", "result")):
+            return (f"{fmu}: the experiment's {attribute} is {experiment.get(attribute)!r}, "
+                    "not a number")
+    for key, element, role in (("inputs", "Stimuli", "testcase"),
+                               ("result", "References", "result")):
         found = experiment.find(element)
         settings[key] = found.get("source") if found is not None else None
         if settings[key] is None or settings[key] not in sources.get(role, []):
@@ -83,7 +85,8 @@ def carried(fmu):
     experiments = [r for r in related(root, "experiment") if r.get("type") == EXPERIMENTS_TYPE]
     if not experiments:
         return f"{fmu}: the manifest relates no file of role experiment and type {EXPERIMENTS_TYPE}"
-    needed = [experiments[0].get("source")] + sources.get("testcase", []) + sources.get("result", [])
+    needed = ([experiments[0].get("source")] + sources.get("testcase", [])
+              + sources.get("result", []))
     missing = sorted(str(s) for s in needed if s is None or member(s) not in files)
     if missing:
         return f"{fmu}: the manifest relates files the FMU does not carry: {missing}"

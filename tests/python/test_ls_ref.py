@@ -133,11 +133,13 @@ def test_packaged_manifests_are_valid_against_the_schemas():
         with zipfile.ZipFile(fmu) as archive:
             names = set(archive.namelist())
             manifest = archive.read(FOLDER + "fmi-ls-manifest.xml")
-            sources = {r.get("role"): r.get("source") for r in ET.fromstring(manifest).findall("Related")}
+            sources = {r.get("role"): r.get("source")
+                       for r in ET.fromstring(manifest).findall("Related")}
             absent[fmu.name] = sorted(s for s in sources.values() if member(s) not in names)
             experiments = sources.get("experiment")
             if experiments is not None and member(experiments) in names:
-                invalid[f"{fmu} {experiments}"] = experiments_errors(archive.read(member(experiments)))
+                invalid[f"{fmu} {experiments}"] = experiments_errors(
+                    archive.read(member(experiments)))
         for schema in MANIFEST_SCHEMAS:
             invalid[f"{fmu} against {schema}"] = manifest_errors(manifest, schema)
         absent[fmu.name] += [] if experiments else ["no file of role experiment"]
@@ -146,7 +148,7 @@ def test_packaged_manifests_are_valid_against_the_schemas():
 
 
 @pytest.mark.parametrize("plant,expected", [
-    (lambda text: text.replace("    <Related", '    <Experiment name="reference"/>\n    <Related', 1),
+    (lambda text: text.replace("    <Related", '    <Experiment name="x"/>\n    <Related', 1),
      "Unexpected child with tag 'Experiment' at position 1. (at /fmiReferences)"),
     (lambda text: text.replace("information on related files", "reference stimuli and results"),
      "attribute '{http://fmi-standard.org/fmi-ls-manifest}fmi-ls-description' has a fixed value "
