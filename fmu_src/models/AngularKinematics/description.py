@@ -25,7 +25,8 @@ CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotati
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections, and
 # these figures of documentation/.
 DOCUMENTATION = [("docs/models.md", ["What it computes", "Rotation sequences and conventions",
-                                     "FMI behaviour", "Capabilities"])]
+                                     "FMI behaviour", "Capabilities"]),
+                 ("docs/cosimulation.md", ["The reference result each FMU carries (FMI-LS-REF)"])]
 FIGURES = [("tumbling_body.png", "omega and alpha of a tumbling body, fixed and body components",
             "A tumbling body simulated with fmpy: the angular velocity and the angular acceleration "
             "in the fixed frame and in the body frame; grey bands: theta[2] within 0.1 rad of "

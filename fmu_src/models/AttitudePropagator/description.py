@@ -20,7 +20,8 @@ CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_partia
         "core/kinematics_euler_rates.c", "core/attitude.c", "elementary/elementary_reduce.c",
         "elementary/elementary_atan2.c"]
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections.
-DOCUMENTATION = [("docs/attitude_propagator.md", None)]
+DOCUMENTATION = [("docs/attitude_propagator.md", None),
+                 ("docs/cosimulation.md", ["The reference result each FMU carries (FMI-LS-REF)"])]
 CAPABILITIES = dict(provides_directional_derivative=True, can_interpolate_inputs=True,
                     max_output_derivative_order=0)
 ENUMERATIONS = {

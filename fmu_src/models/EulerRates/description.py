@@ -15,7 +15,8 @@ CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_euler_
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections, and
 # these figures of documentation/.
 DOCUMENTATION = [("docs/models.md", ["Rotation sequences and conventions",
-                                     "EulerRates: the inverse map", "FMI behaviour"])]
+                                     "EulerRates: the inverse map", "FMI behaviour"]),
+                 ("docs/cosimulation.md", ["The reference result each FMU carries (FMI-LS-REF)"])]
 FIGURES = [("models.svg", "AngularKinematics maps angles and their derivatives to omega and alpha, "
             "EulerRates maps omega and its derivative back to the angle rates",
             "EulerRates, the inverse map of AngularKinematics.")]
