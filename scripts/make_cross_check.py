@@ -3,6 +3,10 @@ reference inputs and our own results, per interface and per platform the FMU car
 layout of the FMI Cross-Check (examples/cross_check.py describes it). Check it with
 `python -m fmpy.cross_check.validate_vendor_repo dist/cross-check`.
 
+Each platform folder's result is computed by that folder's binary where it runs here (fmpy on
+x86_64-linux; the others under wine or qemu, scripts/cross_check_platforms.py), else it is the
+x86_64-linux result, and the folder's README says which and the test that proves the bits equal.
+
     .venv/bin/python scripts/make_cross_check.py [--dist DIR] [--out DIR]"""
 import argparse
 import pathlib
@@ -16,6 +20,7 @@ from fmpy import read_model_description
 from codegen.project import VERSION
 from examples.cross_check import START, STEP, STOP, reference_inputs, simulate, write_csv
 from examples.cross_check3 import simulate3, write_csv3
+from scripts.cross_check_platforms import HOST, origin, run_binary
 from scripts.cross_check_readme import TOOL_ID, readme
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -51,18 +56,25 @@ def input_names(description):
     return names
 
 
-def reference_run(fmu, interface):
+def reference_run(fmu, interface, platform=None):
     """The reference experiment of the FMU in one interface: (description, write, table of the
     inputs, table of the reference outputs), each table with its names, time first; write is
-    the CSV writer of the FMU's FMI version."""
+    the CSV writer of the FMU's FMI version. The outputs are fmpy's, with the host's binary; with
+    a platform, those of that platform's binary where it runs here (None where it does not)."""
     description = read_model_description(str(fmu))
     times = np.round(np.arange(START, STOP + STEP / 2, STEP), 12)
     inputs_names = input_names(description)
     inputs = reference_inputs(inputs_names, times)
+    output_names = REFERENCE_OUTPUTS[description.modelName]
     run, write = ((simulate, write_csv) if description.fmiVersion == "2.0"
                   else (simulate3, write_csv3))
-    names, outputs = run(str(fmu), interface, times, inputs_names, inputs,
-                         REFERENCE_OUTPUTS[description.modelName])
+    if platform is None:
+        names, outputs = run(str(fmu), interface, times, inputs_names, inputs, output_names)
+    else:
+        names, outputs = output_names, run_binary(fmu, platform, description, interface, times,
+                                                  inputs_names, inputs, output_names)
+        if outputs is None:
+            return None
     return (description, write, (["time"] + inputs_names, np.column_stack([times, inputs])),
             (["time"] + names, np.column_stack([times, outputs])))
 
@@ -70,9 +82,12 @@ def reference_run(fmu, interface):
 def make(fmu, out):
     written = []
     for interface in ("cs", "me"):
-        description, write, inputs, outputs = reference_run(fmu, interface)
+        host = reference_run(fmu, interface)
+        description, write, inputs, _ = host
         model, version = description.modelName, description.fmiVersion
         for platform in platforms(fmu):
+            how = origin(platform, version)
+            outputs = (reference_run(fmu, interface, platform) if how == "own" else host)[3]
             folder = out / "fmus" / version / interface / platform / TOOL_ID / VERSION / model
             folder.mkdir(parents=True, exist_ok=True)
             shutil.copyfile(fmu, folder / f"{model}.fmu")
@@ -82,8 +97,8 @@ def make(fmu, out):
                 f"StartTime, {START}\nStopTime, {STOP}\nStepSize, {STEP}\nRelTol, 0\n")
             (folder / "README.md").write_text(readme(
                 model, version, interface, platform, outputs[0][1:],
-                description.numberOfContinuousStates))
-            written.append(folder)
+                description.numberOfContinuousStates, how))
+            written.append((folder, how))
     return written
 
 
@@ -100,8 +115,12 @@ def main(argv=None):
         print(f"no .fmu in {args.dist}: build first (bash scripts/build.sh)")
         return 2
     for fmu in fmus:
-        for folder in make(fmu, out):
-            print(f"wrote {folder.relative_to(out)}")
+        for folder, how in make(fmu, out):
+            version = folder.parts[-6]
+            print(f"wrote {folder.relative_to(out)}: " + {
+                "host": "fmpy, this machine's binary",
+                "own": "its own binary (scripts/cross_check_platforms.py)",
+                "copied": f"copied from {HOST[version]}: its binary does not run here"}[how])
     return 0
 
 

@@ -1,0 +1,44 @@
+"""The cross-check master in C (the cross-check mode of tools/fmu_driver.c and tools/fmi3_driver.c,
+tools/*_cross_check.c), which computes the results of dist/cross-check/'s folders whose binary
+fmpy cannot load here (Windows under wine, aarch64-linux under qemu: scripts/cross_check_platforms.py).
+On the x86_64-linux binary it must print what fmpy's master (examples/cross_check.py,
+cross_check3.py) computes, bit for bit, for every model, FMI version and interface: then what it
+prints with another platform's binary is what the cross-check master would compute with it."""
+import pathlib
+
+import numpy as np
+import pytest
+
+from codegen import project
+from scripts.cross_check_platforms import HOST, RUNNERS, Runner, runnable
+from scripts.make_cross_check import reference_run
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+FMUS = {"2.0": ROOT / "dist", "3.0": ROOT / "dist" / "fmi3"}
+
+
+@pytest.mark.parametrize("interface", ["cs", "me"])
+@pytest.mark.parametrize("version", sorted(FMUS))
+@pytest.mark.parametrize("model", project.MODELS)
+def test_c_master_prints_fmpys_result(model, version, interface, report):
+    fmu = FMUS[version] / f"{model}.fmu"
+    assert runnable(HOST[version], version), "build/fmu_driver or build/fmi3_driver is missing"
+    names, fmpy_result = reference_run(fmu, interface)[3]
+    c_names, c_result = reference_run(fmu, interface, platform=HOST[version])[3]
+    assert c_names == names
+    assert fmpy_result.shape == c_result.shape == (401, len(names))
+    # Some outputs change in time (a master that skipped steps would not print the same).
+    assert (np.ptp(fmpy_result[:, 1:], axis=0) > 0).all()
+    differ = np.count_nonzero(fmpy_result.view(np.uint64) != c_result.view(np.uint64))
+    assert differ == 0, f"{differ} of {c_result.size} values differ from fmpy's"
+    report(f"{model} FMI {version} {interface}: {c_result.size} values bit for bit fmpy's")
+
+
+def test_a_platform_whose_launcher_is_missing_does_not_run():
+    """A row whose launcher is not installed (or whose driver is not built) is not run: its
+    folder gets the host's result and says so (make_cross_check)."""
+    assert RUNNERS["x86_64-linux"].launch() == []
+    missing = Runner("build", launcher=("no-such-emulator-here",))
+    assert missing.launch() is None
+    assert not Runner("no-such-build").driver("3.0").is_file()
+    assert runnable("x86_64-darwin", "3.0") is None
