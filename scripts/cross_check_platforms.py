@@ -70,7 +70,7 @@ DARWIN = ("tests/python/test_darwin_binaries.py checks it statically (architectu
           "libSystem only), and tests/python/test_platforms.py runs the same sources built by its "
           "compiler (zig, preset zig-linux) to the bits of x86_64-linux")
 X86 = ("tests/python/test_platforms.py runs the same sources with its x86 flags (preset x86-musl, "
-       "a static x86 program) to the bits of x86_64-linux; this machine has no 32-bit wine")
+       "a static x86 program) to the bits of x86_64-linux; the build machine has no 32-bit wine")
 # A platform whose launcher or drivers are missing on a machine (RUNNERS runs it here):
 RUN_BY_TEST = ("tests/python/test_platforms.py runs it (under wine or qemu, docs/platforms.md) to "
                "the bits of x86_64-linux")

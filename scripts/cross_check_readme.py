@@ -44,10 +44,11 @@ def origin_text(platform, version, run_by):
         runner = RUNNERS[platform]
         where = ("under wine" if runner.windows else
                  f"under {runner.launcher[0]}" if runner.launcher else "natively")
-        driver = "fmu_driver" if version == "2.0" else "fmi3_driver"
+        driver, master = (("fmu_driver", "cross_check.py") if version == "2.0"
+                          else ("fmi3_driver", "cross_check3.py"))
         return (f"computed by this folder's {platform} binary, run {where} by the master below "
                 f"in C (tools/{driver}_cross_check.c, call for call the one of "
-                "examples/cross_check.py; on the x86_64-linux binary it prints fmpy's result "
+                f"examples/{master}; on the x86_64-linux binary it prints fmpy's result "
                 "bit for bit: tests/python/test_cross_check_platforms.py)")
     return (f"computed by the {HOST[version]} binary through fmpy: this folder's {platform} "
             f"binary does not run on the build machine; {NOT_RUN[platform]}")

@@ -9,6 +9,7 @@ x86_64-linux result, and the folder's README says which and the test that proves
 
     .venv/bin/python scripts/make_cross_check.py [--dist DIR] [--out DIR]"""
 import argparse
+import concurrent.futures
 import pathlib
 import shutil
 import sys
@@ -20,7 +21,7 @@ from fmpy import read_model_description
 from codegen.project import VERSION
 from examples.cross_check import START, STEP, STOP, reference_inputs, simulate, write_csv
 from examples.cross_check3 import simulate3, write_csv3
-from scripts.cross_check_platforms import HOST, origin, run_binary
+from scripts.cross_check_platforms import HOST, RUNNERS, origin, run_binary
 from scripts.cross_check_readme import TOOL_ID, readme
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -79,7 +80,24 @@ def reference_run(fmu, interface, platform=None):
             (["time"] + names, np.column_stack([times, outputs])))
 
 
-def make(fmu, out):
+def own_runs(fmus):
+    """{(fmu, interface, platform): reference_run} of every folder computed by its own binary
+    under wine or qemu. The runs wait mostly for the emulator's start (wine: about a second), so
+    they run side by side; the first under wine alone, since it may create wine's prefix."""
+    jobs = [(fmu, interface, platform) for fmu in fmus for interface in ("cs", "me")
+            for platform in platforms(fmu)
+            if origin(platform, read_model_description(str(fmu)).fmiVersion) == "own"]
+    first = [job for job in jobs if RUNNERS[job[2]].windows][:1]
+    runs = {job: reference_run(*job) for job in first}
+    rest = [job for job in jobs if job not in runs]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=4) as pool:
+        runs.update(zip(rest, pool.map(lambda job: reference_run(*job), rest)))
+    return runs
+
+
+def make(fmu, out, runs=None):
+    """The folders of one FMU; runs: own_runs' results (by default computed here)."""
+    runs = own_runs([fmu]) if runs is None else runs
     written = []
     for interface in ("cs", "me"):
         host = reference_run(fmu, interface)
@@ -87,7 +105,7 @@ def make(fmu, out):
         model, version = description.modelName, description.fmiVersion
         for platform in platforms(fmu):
             how = origin(platform, version)
-            outputs = (reference_run(fmu, interface, platform) if how == "own" else host)[3]
+            outputs = (runs[fmu, interface, platform] if how == "own" else host)[3]
             folder = out / "fmus" / version / interface / platform / TOOL_ID / VERSION / model
             folder.mkdir(parents=True, exist_ok=True)
             shutil.copyfile(fmu, folder / f"{model}.fmu")
@@ -114,8 +132,9 @@ def main(argv=None):
     if not fmus:
         print(f"no .fmu in {args.dist}: build first (bash scripts/build.sh)")
         return 2
+    runs = own_runs(fmus)
     for fmu in fmus:
-        for folder, how in make(fmu, out):
+        for folder, how in make(fmu, out, runs):
             version = folder.parts[-6]
             print(f"wrote {folder.relative_to(out)}: " + {
                 "host": "fmpy, this machine's binary",
