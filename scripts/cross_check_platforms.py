@@ -9,9 +9,10 @@ would compute with that binary.
 
 RUNNERS: a binaries/ folder name (FMI 2's and FMI 3's) -> how its binary runs here. A platform
 of another architecture is one row: its build folder (the preset's, with the drivers) and the
-command that starts them. A folder that is not in RUNNERS, or whose launcher is not installed,
-gets the host's result (HOST, through fmpy); NOT_RUN says which test proves that its binary
-computes the same bits."""
+command that starts them, such as
+    "riscv64-linux": Runner("build-riscv64", **qemu("riscv64")),
+A folder that is not in RUNNERS, or whose launcher or drivers are missing, gets the host's result
+(HOST, through fmpy); proof() names the test that proves its binary computes the same bits."""
 import dataclasses
 import os
 import pathlib
@@ -51,14 +52,19 @@ class Runner:
         return ROOT / self.build / name
 
 
-QEMU_AARCH64 = dict(launcher=("qemu-aarch64",), arguments=("-L", "/usr/aarch64-linux-gnu"))
+def qemu(architecture):
+    """qemu's user mode for a Linux architecture, with Debian's cross libraries of it."""
+    return dict(launcher=(f"qemu-{architecture}",),
+                arguments=("-L", f"/usr/{architecture}-linux-gnu"))
+
+
 WINE64 = dict(launcher=("wine64", "wine", "/usr/lib/wine/wine64"), windows=True)
 # Debian's wine32:i386, which is not installable here (docs/platforms.md)
 WINE32 = dict(launcher=("/usr/lib/wine/wine",), windows=True)
 RUNNERS = {
     "linux64": Runner("build"),
     "x86_64-linux": Runner("build"),
-    "aarch64-linux": Runner("build-aarch64", **QEMU_AARCH64),
+    "aarch64-linux": Runner("build-aarch64", **qemu("aarch64")),
     "win64": Runner("build-win64", **WINE64),
     "x86_64-windows": Runner("build-win64", **WINE64),
     "win32": Runner("build-win32", **WINE32),
@@ -71,12 +77,16 @@ DARWIN = ("tests/python/test_darwin_binaries.py checks it statically (architectu
           "compiler (zig, preset zig-linux) to the bits of x86_64-linux")
 X86 = ("tests/python/test_platforms.py runs the same sources with its x86 flags (preset x86-musl, "
        "a static x86 program) to the bits of x86_64-linux; the build machine has no 32-bit wine")
-# A platform whose launcher or drivers are missing on a machine (RUNNERS runs it here):
+NOT_RUN = {"darwin64": DARWIN, "x86_64-darwin": DARWIN, "aarch64-darwin": DARWIN,
+           "win32": X86, "x86-windows": X86}
+# A platform of RUNNERS whose launcher or drivers are missing on the machine that makes the folder
 RUN_BY_TEST = ("tests/python/test_platforms.py runs it (under wine or qemu, docs/platforms.md) to "
                "the bits of x86_64-linux")
-NOT_RUN = {"darwin64": DARWIN, "x86_64-darwin": DARWIN, "aarch64-darwin": DARWIN,
-           "win32": X86, "x86-windows": X86, "win64": RUN_BY_TEST,
-           "x86_64-windows": RUN_BY_TEST, "aarch64-linux": RUN_BY_TEST}
+
+
+def proof(platform):
+    """The test that proves the bits of a binary that did not run here."""
+    return NOT_RUN.get(platform, RUN_BY_TEST)
 
 def wine_environment():
     """The wine prefix of the tests (build-win64/wineprefix), no Mono or Gecko installer."""

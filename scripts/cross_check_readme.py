@@ -7,7 +7,7 @@ to modelica/fmi-standard.org that adds its entry. AngularKinematics is not liste
 ID such an entry would carry (letters only, as the listed IDs), to be confirmed there before the
 folder is submitted."""
 from examples.cross_check import START, STEP, STOP
-from scripts.cross_check_platforms import HOST, NOT_RUN, RUNNERS
+from scripts.cross_check_platforms import HOST, RUNNERS, proof
 
 TOOL_ID = "AngularKinematics"
 TEXT = """# {model} ({interface}, FMI {version}, {platform})
@@ -51,7 +51,7 @@ def origin_text(platform, version, run_by):
                 f"examples/{master}; on the x86_64-linux binary it prints fmpy's result "
                 "bit for bit: tests/python/test_cross_check_platforms.py)")
     return (f"computed by the {HOST[version]} binary through fmpy: this folder's {platform} "
-            f"binary does not run on the build machine; {NOT_RUN[platform]}")
+            f"binary does not run on the build machine; {proof(platform)}")
 
 
 def readme(model, version, interface, platform, outputs, states, run_by):
