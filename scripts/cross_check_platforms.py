@@ -88,6 +88,7 @@ def proof(platform):
     """The test that proves the bits of a binary that did not run here."""
     return NOT_RUN.get(platform, RUN_BY_TEST)
 
+
 def wine_environment():
     """The wine prefix of the tests (build-win64/wineprefix), no Mono or Gecko installer."""
     return dict(os.environ, WINEPREFIX=str(ROOT / "build-win64" / "wineprefix"),

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from codegen import project
-from scripts.cross_check_platforms import HOST, RUNNERS, Runner, runnable
+from scripts.cross_check_platforms import HOST, RUNNERS, Runner, origin, runnable
 from scripts.make_cross_check import reference_run
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -34,11 +34,13 @@ def test_c_master_prints_fmpys_result(model, version, interface, report):
     report(f"{model} FMI {version} {interface}: {c_result.size} values bit for bit fmpy's")
 
 
-def test_a_platform_whose_launcher_is_missing_does_not_run():
-    """A row whose launcher is not installed (or whose driver is not built) is not run: its
-    folder gets the host's result and says so (make_cross_check)."""
-    assert RUNNERS["x86_64-linux"].launch() == []
-    missing = Runner("build", launcher=("no-such-emulator-here",))
-    assert missing.launch() is None
-    assert not Runner("no-such-build").driver("3.0").is_file()
-    assert runnable("x86_64-darwin", "3.0") is None
+def test_a_row_runs_only_with_its_launcher_and_driver(monkeypatch):
+    """A row of RUNNERS whose launcher is not installed or whose driver is not built is not run:
+    its folder gets the host's result (make_cross_check says so in its README); with both it is."""
+    monkeypatch.setitem(RUNNERS, "riscv64-linux", Runner("build", launcher=("no-such-emulator",)))
+    assert origin("riscv64-linux", "3.0") == "copied"
+    monkeypatch.setitem(RUNNERS, "riscv64-linux", Runner("no-such-build"))
+    assert origin("riscv64-linux", "3.0") == "copied"
+    monkeypatch.setitem(RUNNERS, "riscv64-linux", Runner("build"))  # natively, build/'s driver
+    assert origin("riscv64-linux", "3.0") == "own"
+    assert origin("x86_64-darwin", "3.0") == "copied" and origin("x86_64-linux", "3.0") == "host"
