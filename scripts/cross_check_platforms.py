@@ -35,6 +35,7 @@ class Runner:
     launcher: tuple = ()  # the program that runs the platform's programs here (the first found
     arguments: tuple = ()  # of these names or paths) and its arguments; () natively
     windows: bool = False  # a Windows program: .exe, Windows paths, the wine prefix
+    linked: bool = False  # one static driver per model with its FMI functions linked in
 
     def launch(self):
         """The launcher's command, or None when it is not installed here."""
@@ -46,9 +47,9 @@ class Runner:
                 return [found, *self.arguments]
         return None
 
-    def driver(self, fmi_version):
+    def driver(self, fmi_version, model):
         name = ("fmu_driver" if fmi_version == "2.0" else "fmi3_driver") + (
-            ".exe" if self.windows else "")
+            f"_{model}" if self.linked else "") + (".exe" if self.windows else "")
         return ROOT / self.build / name
 
 
@@ -69,14 +70,18 @@ RUNNERS = {
     "x86_64-windows": Runner("build-win64", **WINE64),
     "win32": Runner("build-win32", **WINE32),
     "x86-windows": Runner("build-win32", **WINE32),
+    # Not a folder of the FMUs: the x86 proof build (docs/platforms.md), the x86-windows sources
+    # and flags in static x86 programs, which tests/python/test_cross_check_platforms.py runs.
+    "x86-linux-musl": Runner("build-x86-musl", linked=True),
 }
 
 # Where a folder's binary does not run here: the test that proves it computes the host's bits.
 DARWIN = ("tests/python/test_darwin_binaries.py checks it statically (architecture, exports, "
           "libSystem only), and tests/python/test_platforms.py runs the same sources built by its "
           "compiler (zig, preset zig-linux) to the bits of x86_64-linux")
-X86 = ("tests/python/test_platforms.py runs the same sources with its x86 flags (preset x86-musl, "
-       "a static x86 program) to the bits of x86_64-linux; the build machine has no 32-bit wine")
+X86 = ("tests/python/test_cross_check_platforms.py runs the same sources with its x86 flags "
+       "(preset x86-musl, static x86 programs) under this master to this result bit for bit; the "
+       "build machine has no 32-bit wine")
 NOT_RUN = {"darwin64": DARWIN, "x86_64-darwin": DARWIN, "aarch64-darwin": DARWIN,
            "win32": X86, "x86-windows": X86}
 # A platform of RUNNERS whose launcher or drivers are missing on the machine that makes the folder
@@ -95,13 +100,14 @@ def wine_environment():
                 WINEDEBUG="-all", WINEDLLOVERRIDES="mscoree,mshtml=")
 
 
-def runnable(platform, fmi_version):
-    """(runner, command prefix) of the platform's binary, or None when it cannot run here."""
+def runnable(platform, fmi_version, model="AngularKinematics"):
+    """(runner, command prefix) of the platform's binary, or None when it cannot run here; model:
+    whose driver, for a linked one."""
     runner = RUNNERS.get(platform)
     if runner is None:
         return None
     launch = runner.launch()
-    if launch is None or not runner.driver(fmi_version).is_file():
+    if launch is None or not runner.driver(fmi_version, model).is_file():
         return None
     return runner, launch
 
@@ -134,7 +140,7 @@ def run_binary(fmu, platform, description, interface, times, input_names, inputs
     """The outputs (len(times) x outputs) that the FMU's binary of the platform computes under
     the cross-check master, or None when that binary cannot run here."""
     version, model = description.fmiVersion, description.modelName
-    found = runnable(platform, version)
+    found = runnable(platform, version, model)
     if found is None:
         return None
     runner, launch = found
@@ -142,14 +148,16 @@ def run_binary(fmu, platform, description, interface, times, input_names, inputs
     rows = "".join(hex_words(np.concatenate([[t], row])) + "\n" for t, row in zip(times, inputs))
     folder = pathlib.Path(tempfile.mkdtemp(prefix="cross-check-"))
     try:
-        with zipfile.ZipFile(fmu) as archive:
-            library = pathlib.Path(archive.extract(
-                f"binaries/{platform}/{binary_name(model, platform)}", folder))
-        library_argument = ("Z:" + str(library).replace("/", "\\")) if runner.windows \
-            else str(library)
+        library_argument = "-"  # a linked driver has the model in it
+        if not runner.linked:
+            with zipfile.ZipFile(fmu) as archive:
+                library = pathlib.Path(archive.extract(
+                    f"binaries/{platform}/{binary_name(model, platform)}", folder))
+            library_argument = ("Z:" + str(library).replace("/", "\\")) if runner.windows \
+                else str(library)
         head = [library_argument, "cross-check", model] if version == "2.0" \
             else [library_argument, model, "cross-check"]
-        done = subprocess.run([*launch, str(runner.driver(version)), *head, *arguments],
+        done = subprocess.run([*launch, str(runner.driver(version, model)), *head, *arguments],
                               input=rows, capture_output=True, text=True, timeout=300,
                               env=wine_environment() if runner.windows else None)
     finally:
