@@ -121,8 +121,10 @@ add_custom_target(fmi3_binaries DEPENDS ${_fmi3_targets})
 
 # Our FMI 3 master: runs a fixed scenario through one FMI 3 binary and prints every output in
 # hex, so that the binaries of x86_64-linux, aarch64-linux (under qemu) and x86_64-windows (under
-# wine) can be compared bit for bit (tests/python/test_fmi3_platforms.py).
-add_executable(fmi3_driver tools/fmi3_driver.c tools/fmi3_driver_models.c) # models: generated
+# wine) can be compared bit for bit (tests/python/test_platforms.py); its cross-check mode
+# computes dist/cross-check/'s results with each platform's binary.
+add_executable(fmi3_driver tools/fmi3_driver.c tools/fmi3_driver_cross_check.c tools/driver_rows.c
+                           tools/fmi3_driver_models.c) # models: generated
 target_include_directories(fmi3_driver PRIVATE "${FMI2_HEADERS_DIR}" ${CMAKE_SOURCE_DIR}/tools)
 target_compile_options(fmi3_driver PRIVATE ${AK_WARNINGS})
 target_link_libraries(fmi3_driver PRIVATE ${CMAKE_DL_LIBS})

@@ -12,12 +12,14 @@ foreach(_model IN LISTS AK_MODELS)
       list(APPEND _tables fmu_src/models/${_other}/${_other}_variables.c)
     endif()
   endforeach()
-  add_executable(fmu_driver_${_model} tools/fmu_driver.c tools/fmu_driver_models.c ${_tables}
+  add_executable(fmu_driver_${_model} tools/fmu_driver.c tools/fmu_driver_cross_check.c
+                 tools/driver_rows.c tools/fmu_driver_models.c ${_tables}
                  ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${_model}} ${AK_FMI2_SOURCES}
                  ${AK_CORE_SOURCES_${_model}})
   target_include_directories(fmu_driver_${_model} PRIVATE ${AK_INCLUDE_DIRS} ${AK_MODEL_FOLDERS}
                              tools "${FMI2_HEADERS_DIR}")
-  add_executable(fmi3_driver_${_model} tools/fmi3_driver.c tools/fmi3_driver_models.c
+  add_executable(fmi3_driver_${_model} tools/fmi3_driver.c tools/fmi3_driver_cross_check.c
+                 tools/driver_rows.c tools/fmi3_driver_models.c
                  ${AK_MODEL_COMMON_SOURCES} ${AK_MODEL_SOURCES_${_model}}
                  ${AK_FMI3_ARRAYS_${_model}} ${AK_FMI3_SOURCES} ${AK_CORE_SOURCES_${_model}})
   target_include_directories(fmi3_driver_${_model} PRIVATE ${AK_FMI3_INCLUDE_DIRS}

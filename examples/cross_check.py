@@ -6,7 +6,9 @@ check that re-simulates them.
 
 scripts/make_cross_check.py writes such a folder into dist/cross-check/; examples/ci_check.py
 --cross-check DIR re-simulates every <Model>_in.csv under DIR with the FMU beside it (on this
-machine's binary of it) and compares the columns of <Model>_ref.csv (FMI 3.0: cross_check3.py;
+machine's binary of it) and compares the columns of <Model>_ref.csv (which make_cross_check
+computed with the folder's platform binary where that runs on the build machine: under wine or
+qemu, scripts/cross_check_platforms.py; FMI 3.0: cross_check3.py;
 an array's cell holds its elements separated by spaces). The call sequence (also that of the FMI4j
 driver, examples/fmi4j/): set up, initialize, then at each row of <Model>_in.csv set the inputs
 (after fmi2SetTime in Model Exchange), read the outputs, and in Co-Simulation step to the next

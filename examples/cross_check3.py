@@ -51,15 +51,22 @@ def euler_step(instance, states, h, derivatives):
     instance.completedIntegratorStep()
 
 
-def simulate3(fmu, interface, times, input_names, inputs, output_names):
-    """(output_names, array len(times) x outputs) of the FMI 3 FMU ('cs' or 'me')."""
-    description = read_model_description(fmu)
+def layout(description, input_names, output_names):
+    """What simulate3 sets and gets: (value references of the input arrays, of the output arrays,
+    the number of output values, the index of each named output element among them)."""
     vr = {v.name: v.valueReference for v in description.modelVariables}
     size = sizes(description)
     in_arrays, out_arrays = arrays(input_names), arrays(output_names)
     offset = dict(zip(out_arrays, np.cumsum([0] + [size[a] for a in out_arrays])))
-    picks = [offset[base] + k for base, k in map(element, output_names)]
-    n_out = sum(size[a] for a in out_arrays)
+    picks = [int(offset[base] + k) for base, k in map(element, output_names)]
+    return ([vr[a] for a in in_arrays], [vr[a] for a in out_arrays],
+            int(sum(size[a] for a in out_arrays)), picks)
+
+
+def simulate3(fmu, interface, times, input_names, inputs, output_names):
+    """(output_names, array len(times) x outputs) of the FMI 3 FMU ('cs' or 'me')."""
+    description = read_model_description(fmu)
+    in_vrs, out_vrs, n_out, picks = layout(description, input_names, output_names)
     unzipdir = extract(fmu, unzipdir=tempfile.mkdtemp())
     try:
         instance = instantiate(description, unzipdir, interface)
@@ -73,8 +80,8 @@ def simulate3(fmu, interface, times, input_names, inputs, output_names):
         for row, time in enumerate(times):
             if interface == "me":
                 instance.setTime(time)
-            instance.setFloat64([vr[a] for a in in_arrays], list(inputs[row]))
-            values = instance.getFloat64([vr[a] for a in out_arrays], nValues=n_out)
+            instance.setFloat64(in_vrs, list(inputs[row]))
+            values = instance.getFloat64(out_vrs, nValues=n_out)
             outputs[row] = np.asarray(values)[picks]
             if row + 1 < len(times):
                 h = float(times[row + 1] - time)

@@ -3,8 +3,13 @@ reference inputs and our own results, per interface and per platform the FMU car
 layout of the FMI Cross-Check (examples/cross_check.py describes it). Check it with
 `python -m fmpy.cross_check.validate_vendor_repo dist/cross-check`.
 
+Each platform folder's result is computed by that folder's binary where it runs here (fmpy on
+x86_64-linux; the others under wine or qemu, scripts/cross_check_platforms.py), else it is the
+x86_64-linux result, and the folder's README says which and the test that proves the bits equal.
+
     .venv/bin/python scripts/make_cross_check.py [--dist DIR] [--out DIR]"""
 import argparse
+import concurrent.futures
 import pathlib
 import shutil
 import sys
@@ -16,6 +21,7 @@ from fmpy import read_model_description
 from codegen.project import VERSION
 from examples.cross_check import START, STEP, STOP, reference_inputs, simulate, write_csv
 from examples.cross_check3 import simulate3, write_csv3
+from scripts.cross_check_platforms import HOST, RUNNERS, origin, run_binary
 from scripts.cross_check_readme import TOOL_ID, readme
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -51,28 +57,55 @@ def input_names(description):
     return names
 
 
-def reference_run(fmu, interface):
+def reference_run(fmu, interface, platform=None):
     """The reference experiment of the FMU in one interface: (description, write, table of the
     inputs, table of the reference outputs), each table with its names, time first; write is
-    the CSV writer of the FMU's FMI version."""
+    the CSV writer of the FMU's FMI version. The outputs are fmpy's, with the host's binary; with
+    a platform, those of that platform's binary where it runs here (None where it does not)."""
     description = read_model_description(str(fmu))
     times = np.round(np.arange(START, STOP + STEP / 2, STEP), 12)
     inputs_names = input_names(description)
     inputs = reference_inputs(inputs_names, times)
+    output_names = REFERENCE_OUTPUTS[description.modelName]
     run, write = ((simulate, write_csv) if description.fmiVersion == "2.0"
                   else (simulate3, write_csv3))
-    names, outputs = run(str(fmu), interface, times, inputs_names, inputs,
-                         REFERENCE_OUTPUTS[description.modelName])
+    if platform is None:
+        names, outputs = run(str(fmu), interface, times, inputs_names, inputs, output_names)
+    else:
+        names, outputs = output_names, run_binary(fmu, platform, description, interface, times,
+                                                  inputs_names, inputs, output_names)
+        if outputs is None:
+            return None
     return (description, write, (["time"] + inputs_names, np.column_stack([times, inputs])),
             (["time"] + names, np.column_stack([times, outputs])))
 
 
-def make(fmu, out):
+def own_runs(fmus):
+    """{(fmu, interface, platform): reference_run} of every folder computed by its own binary
+    under wine or qemu. The runs wait mostly for the emulator's start (wine: about a second), so
+    they run side by side; the first under wine alone, since it may create wine's prefix."""
+    jobs = [(fmu, interface, platform) for fmu in fmus for interface in ("cs", "me")
+            for platform in platforms(fmu)
+            if origin(platform, read_model_description(str(fmu)).fmiVersion) == "own"]
+    first = [job for job in jobs if RUNNERS[job[2]].windows][:1]
+    runs = {job: reference_run(*job) for job in first}
+    rest = [job for job in jobs if job not in runs]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=4) as pool:
+        runs.update(zip(rest, pool.map(lambda job: reference_run(*job), rest)))
+    return runs
+
+
+def make(fmu, out, runs=None):
+    """The folders of one FMU; runs: own_runs' results (by default computed here)."""
+    runs = own_runs([fmu]) if runs is None else runs
     written = []
     for interface in ("cs", "me"):
-        description, write, inputs, outputs = reference_run(fmu, interface)
+        host = reference_run(fmu, interface)
+        description, write, inputs, _ = host
         model, version = description.modelName, description.fmiVersion
         for platform in platforms(fmu):
+            how = origin(platform, version)
+            outputs = (runs[fmu, interface, platform] if how == "own" else host)[3]
             folder = out / "fmus" / version / interface / platform / TOOL_ID / VERSION / model
             folder.mkdir(parents=True, exist_ok=True)
             shutil.copyfile(fmu, folder / f"{model}.fmu")
@@ -82,8 +115,8 @@ def make(fmu, out):
                 f"StartTime, {START}\nStopTime, {STOP}\nStepSize, {STEP}\nRelTol, 0\n")
             (folder / "README.md").write_text(readme(
                 model, version, interface, platform, outputs[0][1:],
-                description.numberOfContinuousStates))
-            written.append(folder)
+                description.numberOfContinuousStates, how))
+            written.append((folder, how))
     return written
 
 
@@ -99,9 +132,14 @@ def main(argv=None):
     if not fmus:
         print(f"no .fmu in {args.dist}: build first (bash scripts/build.sh)")
         return 2
+    runs = own_runs(fmus)
     for fmu in fmus:
-        for folder in make(fmu, out):
-            print(f"wrote {folder.relative_to(out)}")
+        for folder, how in make(fmu, out, runs):
+            version = folder.parts[-6]
+            print(f"wrote {folder.relative_to(out)}: " + {
+                "host": "fmpy, this machine's binary",
+                "own": "its own binary (scripts/cross_check_platforms.py)",
+                "copied": f"copied from {HOST[version]}: its binary does not run here"}[how])
     return 0
 
 

@@ -12,6 +12,8 @@
  * FMU the same bits and any difference comes from the binaries alone.
  *
  * Usage: fmi3_driver LIBRARY MODEL [STEPS]    exit status 0 when no call returned fmi3Error.
+ *        fmi3_driver LIBRARY MODEL cross-check ...   the cross-check master instead
+ * (tools/fmi3_driver_cross_check.c).
  *
  * Built with AK_DRIVER_LINKED, the driver has one model's FMI functions linked in instead of
  * loading a library (LIBRARY is ignored; MODEL must be that model, or the instantiation token is
@@ -22,6 +24,7 @@
 #include <string.h>
 
 #include "fmi3FunctionTypes.h"
+#include "fmi3_driver_api.h"
 #include "fmi3_driver_models.h"
 
 #if defined(AK_DRIVER_LINKED)
@@ -33,21 +36,6 @@
 #endif
 
 typedef void (*generic_function)(void);
-
-typedef struct {
-    fmi3InstantiateCoSimulationTYPE *instantiate;
-    fmi3EnterInitializationModeTYPE *enter_initialization_mode;
-    fmi3ExitInitializationModeTYPE *exit_initialization_mode;
-    fmi3SetInt64TYPE *set_int64;
-    fmi3SetFloat64TYPE *set_float64;
-    fmi3GetFloat64TYPE *get_float64;
-    fmi3DoStepTYPE *do_step;
-    fmi3GetDirectionalDerivativeTYPE *directional;
-    fmi3GetAdjointDerivativeTYPE *adjoint;
-    fmi3GetOutputDerivativesTYPE *output_derivatives;
-    fmi3TerminateTYPE *terminate;
-    fmi3FreeInstanceTYPE *free_instance;
-} fmi3_api;
 
 #ifdef AK_DRIVER_LINKED
 static int load_api(void *library, fmi3_api *api) {
@@ -64,6 +52,14 @@ static int load_api(void *library, fmi3_api *api) {
     api->output_derivatives = fmi3GetOutputDerivatives;
     api->terminate = fmi3Terminate;
     api->free_instance = fmi3FreeInstance;
+    api->instantiate_model_exchange = fmi3InstantiateModelExchange;
+    api->set_time = fmi3SetTime;
+    api->update_discrete_states = fmi3UpdateDiscreteStates;
+    api->enter_continuous_time_mode = fmi3EnterContinuousTimeMode;
+    api->get_continuous_states = fmi3GetContinuousStates;
+    api->get_continuous_state_derivatives = fmi3GetContinuousStateDerivatives;
+    api->set_continuous_states = fmi3SetContinuousStates;
+    api->completed_integrator_step = fmi3CompletedIntegratorStep;
     return 1;
 }
 #else
@@ -82,12 +78,16 @@ static generic_function load_symbol(void *library, const char *name) {
 }
 
 static int load_api(void *library, fmi3_api *api) {
-    enum { N = 12 };
+    enum { N = 20 };
     const char *names[N] = {"fmi3InstantiateCoSimulation", "fmi3EnterInitializationMode",
                             "fmi3ExitInitializationMode", "fmi3SetInt64", "fmi3SetFloat64",
                             "fmi3GetFloat64", "fmi3DoStep", "fmi3GetDirectionalDerivative",
                             "fmi3GetAdjointDerivative", "fmi3GetOutputDerivatives",
-                            "fmi3Terminate", "fmi3FreeInstance"};
+                            "fmi3Terminate", "fmi3FreeInstance", "fmi3InstantiateModelExchange",
+                            "fmi3SetTime", "fmi3UpdateDiscreteStates",
+                            "fmi3EnterContinuousTimeMode", "fmi3GetContinuousStates",
+                            "fmi3GetContinuousStateDerivatives", "fmi3SetContinuousStates",
+                            "fmi3CompletedIntegratorStep"};
     generic_function f[N];
     for (int i = 0; i < N; i++) {
         if ((f[i] = load_symbol(library, names[i])) == NULL) {
@@ -106,6 +106,14 @@ static int load_api(void *library, fmi3_api *api) {
     api->output_derivatives = (fmi3GetOutputDerivativesTYPE *)f[9];
     api->terminate = (fmi3TerminateTYPE *)f[10];
     api->free_instance = (fmi3FreeInstanceTYPE *)f[11];
+    api->instantiate_model_exchange = (fmi3InstantiateModelExchangeTYPE *)f[12];
+    api->set_time = (fmi3SetTimeTYPE *)f[13];
+    api->update_discrete_states = (fmi3UpdateDiscreteStatesTYPE *)f[14];
+    api->enter_continuous_time_mode = (fmi3EnterContinuousTimeModeTYPE *)f[15];
+    api->get_continuous_states = (fmi3GetContinuousStatesTYPE *)f[16];
+    api->get_continuous_state_derivatives = (fmi3GetContinuousStateDerivativesTYPE *)f[17];
+    api->set_continuous_states = (fmi3SetContinuousStatesTYPE *)f[18];
+    api->completed_integrator_step = (fmi3CompletedIntegratorStepTYPE *)f[19];
     return 1;
 }
 #endif
@@ -219,7 +227,8 @@ int main(int argc, char **argv) {
             m = &DRIVER_MODELS[i];
         }
     }
-    const int steps = argc > 3 ? atoi(argv[3]) : 3;
+    const int cross_check = argc > 3 && strcmp(argv[3], "cross-check") == 0;
+    const int steps = argc > 3 && !cross_check ? atoi(argv[3]) : 3;
 #if defined(AK_DRIVER_LINKED)
     static const char linked_in = 0; /* any non-NULL handle: the functions are linked in */
     void *library = (void *)&linked_in;
@@ -232,6 +241,9 @@ int main(int argc, char **argv) {
     if (m == NULL || library == NULL || !load_api(library, &api)) {
         fprintf(stderr, "fmi3_driver: cannot load %s as model %s\n", argv[1], argv[2]);
         return 2;
+    }
+    if (cross_check) {
+        return fmi3_driver_cross_check(&api, m, argc - 4, argv + 4);
     }
     for (int64_t sequence = 1; sequence <= 24; sequence++) {
         for (int64_t frame = 1; frame <= (m->frame != 0 ? 2 : 1); frame++) {

@@ -16,6 +16,8 @@
  * Usage: fmu_driver LIBRARY [STEPS [MODEL]]   MODEL: a model of the project (default
  * AngularKinematics; the table is fmu_driver_models.c); exit status 0 when every call returned
  * fmi2OK.
+ *        fmu_driver LIBRARY cross-check MODEL ...   the cross-check master instead
+ * (tools/fmu_driver_cross_check.c).
  *
  * Built with AK_DRIVER_LINKED, the driver has one model's FMI functions linked in instead of
  * loading a library (LIBRARY is ignored; MODEL must be that model, or fmi2Instantiate refuses the
@@ -27,6 +29,7 @@
 #include <string.h>
 
 #include "fmi2FunctionTypes.h"
+#include "fmu_driver_api.h"
 #include "fmu_driver_models.h"
 
 #if defined(AK_DRIVER_LINKED)
@@ -38,19 +41,6 @@
 #endif
 
 typedef void (*generic_function)(void);
-
-typedef struct {
-    fmi2GetVersionTYPE *get_version;
-    fmi2InstantiateTYPE *instantiate;
-    fmi2SetupExperimentTYPE *setup_experiment;
-    fmi2EnterInitializationModeTYPE *enter_initialization_mode;
-    fmi2ExitInitializationModeTYPE *exit_initialization_mode;
-    fmi2SetRealTYPE *set_real;
-    fmi2GetRealTYPE *get_real;
-    fmi2DoStepTYPE *do_step;
-    fmi2TerminateTYPE *terminate;
-    fmi2FreeInstanceTYPE *free_instance;
-} fmi2_api;
 
 #ifdef AK_DRIVER_LINKED
 static void *open_library(const char *path) {
@@ -71,6 +61,13 @@ static int load_api(void *library, fmi2_api *api) {
     api->do_step = fmi2DoStep;
     api->terminate = fmi2Terminate;
     api->free_instance = fmi2FreeInstance;
+    api->set_time = fmi2SetTime;
+    api->new_discrete_states = fmi2NewDiscreteStates;
+    api->enter_continuous_time_mode = fmi2EnterContinuousTimeMode;
+    api->get_continuous_states = fmi2GetContinuousStates;
+    api->get_derivatives = fmi2GetDerivatives;
+    api->set_continuous_states = fmi2SetContinuousStates;
+    api->completed_integrator_step = fmi2CompletedIntegratorStep;
     return 1;
 }
 #else
@@ -98,12 +95,16 @@ static void *open_library(const char *path) {
 }
 
 static int load_api(void *library, fmi2_api *api) {
-    generic_function f[10];
-    const char *names[10] = {"fmi2GetVersion", "fmi2Instantiate", "fmi2SetupExperiment",
-                             "fmi2EnterInitializationMode", "fmi2ExitInitializationMode",
-                             "fmi2SetReal", "fmi2GetReal", "fmi2DoStep", "fmi2Terminate",
-                             "fmi2FreeInstance"};
-    for (int i = 0; i < 10; i++) {
+    enum { N = 17 };
+    generic_function f[N];
+    const char *names[N] = {"fmi2GetVersion", "fmi2Instantiate", "fmi2SetupExperiment",
+                            "fmi2EnterInitializationMode", "fmi2ExitInitializationMode",
+                            "fmi2SetReal", "fmi2GetReal", "fmi2DoStep", "fmi2Terminate",
+                            "fmi2FreeInstance", "fmi2SetTime", "fmi2NewDiscreteStates",
+                            "fmi2EnterContinuousTimeMode", "fmi2GetContinuousStates",
+                            "fmi2GetDerivatives", "fmi2SetContinuousStates",
+                            "fmi2CompletedIntegratorStep"};
+    for (int i = 0; i < N; i++) {
         f[i] = load_symbol(library, names[i]);
         if (f[i] == NULL) {
             return 0;
@@ -119,6 +120,13 @@ static int load_api(void *library, fmi2_api *api) {
     api->do_step = (fmi2DoStepTYPE *)f[7];
     api->terminate = (fmi2TerminateTYPE *)f[8];
     api->free_instance = (fmi2FreeInstanceTYPE *)f[9];
+    api->set_time = (fmi2SetTimeTYPE *)f[10];
+    api->new_discrete_states = (fmi2NewDiscreteStatesTYPE *)f[11];
+    api->enter_continuous_time_mode = (fmi2EnterContinuousTimeModeTYPE *)f[12];
+    api->get_continuous_states = (fmi2GetContinuousStatesTYPE *)f[13];
+    api->get_derivatives = (fmi2GetDerivativesTYPE *)f[14];
+    api->set_continuous_states = (fmi2SetContinuousStatesTYPE *)f[15];
+    api->completed_integrator_step = (fmi2CompletedIntegratorStepTYPE *)f[16];
     return 1;
 }
 #endif
@@ -156,7 +164,8 @@ int main(int argc, char **argv) {
         fprintf(stderr, "\n");
         return 2;
     }
-    const int steps = argc > 2 ? atoi(argv[2]) : 200;
+    const int cross_check = argc > 2 && strcmp(argv[2], "cross-check") == 0;
+    const int steps = argc > 2 && !cross_check ? atoi(argv[2]) : 200;
     const driven_model *model = NULL;
     for (size_t m = 0; m < N_DRIVEN_MODELS; m++) {
         if (strcmp(argc > 3 ? argv[3] : "AngularKinematics", DRIVEN_MODELS[m].name) == 0) {
@@ -178,9 +187,12 @@ int main(int argc, char **argv) {
     if (!load_api(library, &api)) {
         return 1;
     }
+    const fmi2CallbackFunctions callbacks = {logger, allocate, free, NULL, NULL};
+    if (cross_check) {
+        return fmu_driver_cross_check(&api, &callbacks, model, argc - 4, argv + 4);
+    }
     printf("fmi2GetVersion %s\n", api.get_version());
 
-    const fmi2CallbackFunctions callbacks = {logger, allocate, free, NULL, NULL};
     fmi2Component instance = api.instantiate("driver", fmi2CoSimulation, guid, "", &callbacks,
                                              fmi2False, fmi2False);
     if (instance == NULL) {

@@ -1,13 +1,20 @@
 """dist/cross-check/ (scripts/make_cross_check.py): fmpy's cross-check validator reports 0
 problems (and a problem for a name fmpy's reader splits); every model in every FMI version,
 interface and platform the FMUs carry; at most 10 reference values, named as in the FMU, the inputs
-as the FMU's; FMI 3.0 results equal FMI 2.0's; AngularKinematics right against the 40-digit
-reference; examples/ci_check.py --cross-check passing on it and failing on a moved value."""
+as the FMU's; each platform folder's result computed by its own binary where that runs here
+(wine, qemu-aarch64: scripts/cross_check_platforms.py), its README naming the binary, and every
+folder's result bit for bit the others'; FMI 3.0 results equal FMI 2.0's; AngularKinematics right
+against the 40-digit reference; examples/ci_check.py --cross-check passing on it (fmpy's
+x86_64-linux run against the results of the other binaries) and failing on a moved value.
+
+External: making the folder runs the Windows binaries under wine and the aarch64-linux ones under
+qemu, with the drivers of the cross builds."""
 import pathlib
 import re
 import shutil
 import subprocess
 import sys
+import time
 import zipfile
 
 import numpy as np
@@ -19,7 +26,11 @@ from codegen import reference
 
 from codegen.project import VERSION
 from examples.cross_check import read_csv, read_options
+from scripts.cross_check_platforms import HOST, proof
 from scripts.cross_check_readme import TOOL_ID
+
+# wine's prefix is shared with the other wine test files: one worker for all (test_platforms.py)
+pytestmark = [pytest.mark.xdist_group("wine"), pytest.mark.external]
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -28,6 +39,9 @@ PLATFORMS = {"2.0": {"linux64", "win64", "win32", "darwin64"},
              "3.0": {"x86_64-linux", "x86_64-windows", "aarch64-linux", "x86-windows",
                      "x86_64-darwin", "aarch64-darwin"}}
 FMUS = {"2.0": ROOT / "dist", "3.0": ROOT / "dist" / "fmi3"}
+# The folders whose binary runs here (docs/platforms.md), with the words their README says it by.
+RUN_HERE = {"2.0": {"win64": "under wine"},
+            "3.0": {"x86_64-windows": "under wine", "aarch64-linux": "under qemu-aarch64"}}
 # One folder per FMI version, interface (cs, me), platform and model: 24 FMI 2, 36 FMI 3.
 FOLDERS = sum(len(platforms) for platforms in PLATFORMS.values()) * 2 * len(MODELS)
 
@@ -38,11 +52,18 @@ def run(*arguments):
 
 
 @pytest.fixture(scope="module")
-def folder(tmp_path_factory, fmu_path, euler_fmu_path):
+def made(tmp_path_factory, fmu_path, euler_fmu_path):
+    """(the folder, make_cross_check's printout, its time in seconds)."""
     out = tmp_path_factory.mktemp("cross-check")
+    start = time.monotonic()
     done = run(ROOT / "scripts" / "make_cross_check.py", "--out", out)
     assert done.returncode == 0, done.stdout + done.stderr
-    return out
+    return out, done.stdout, time.monotonic() - start
+
+
+@pytest.fixture(scope="module")
+def folder(made):
+    return made[0]
 
 
 def model_folder(root, version, interface, platform, model):
@@ -190,8 +211,81 @@ def test_ci_check_passes_then_fails_on_a_moved_value(folder, report):
     move(euler, 200, 1)  # theta_dot[1] at t = 1.99 s
     move(attitude, 301, 1, element=2)  # q[3] at t = 3 s
     done = run(ROOT / "examples" / "ci_check.py", "--cross-check", folder)
+    for path, text in saved.items():  # the folder as made, for the tests after this one
+        path.write_text(text)
     report(f"one value in each of two folders moved by 3 tolerances: exit {done.returncode}")
     assert done.returncode == 1, done.stdout
     assert "DIFFERENT me EulerRates theta_dot[1]" in done.stdout and "t = 1.99 s" in done.stdout
     assert "DIFFERENT cs AttitudePropagator q[3]" in done.stdout and "t = 3 s" in done.stdout
     assert done.stdout.count(" ok ") == FOLDERS - 2 and done.stdout.count("FAILED ") == 2
+
+
+def test_each_folder_says_which_binary_computed_it(made, report):
+    """The folders of the platforms that run here hold their own binary's result; the others
+    (macOS; x86 Windows without a 32-bit wine) the host's, and name the test that proves the bits
+    of their binary."""
+    root, printout, seconds = made
+    own = 0
+    for version, interface, platform, model in cases():
+        text = (model_folder(root, version, interface, platform, model) / "README.md").read_text()
+        text = " ".join(text.split())
+        if platform == HOST[version]:
+            assert f"computed by this folder's {platform} binary, through fmpy" in text
+        elif platform in RUN_HERE[version]:
+            assert (f"computed by this folder's {platform} binary, run "
+                    f"{RUN_HERE[version][platform]}") in text
+            own += 1
+        elif "darwin" in platform or "run under wine" not in text:  # x86: a 32-bit wine runs it
+            assert f"computed by the {HOST[version]} binary through fmpy" in text
+            assert proof(platform) in text and "tests/python/test_" in proof(platform)
+            assert ("darwin" in proof(platform)) == ("darwin" in platform)
+    assert own == 2 * len(MODELS) * sum(map(len, RUN_HERE.values())) == 18
+    assert printout.count("its own binary") >= own
+    report(f"{own} folders computed by their own binary under wine or qemu; make_cross_check "
+           f"took {seconds:.1f} s")
+
+
+def disagreements(root):
+    """Every folder whose <Model>_ref.csv differs in any bit from the host folder's of the same
+    FMI version, interface and model: bits, not a tolerance, because every platform's binary
+    computes the same bits (docs/platforms.md), and one that does not is a finding even within
+    the cross-check's tolerance."""
+    found = []
+    for version in PLATFORMS:
+        for interface in ("cs", "me"):
+            for model in MODELS:
+                bits = {platform: read_csv(model_folder(root, version, interface, platform, model)
+                                           / f"{model}_ref.csv")[1].view(np.uint64)
+                        for platform in sorted(PLATFORMS[version])}
+                host = bits[HOST[version]]
+                found += [f"{version} {interface} {platform} {model}: "
+                          f"{np.count_nonzero(b != host)} values differ"
+                          for platform, b in bits.items()
+                          if b.shape != host.shape or (b != host).any()]
+    return found
+
+
+def test_every_folder_has_the_bits_of_the_others(folder, report):
+    assert disagreements(folder) == []
+    values = sum(read_csv(model_folder(folder, *case) / f"{case[3]}_ref.csv")[1].size
+                 for case in cases())
+    report(f"{FOLDERS} folders, {values} values: every folder bit for bit its host folder's")
+
+
+def test_one_ulp_in_one_folder_is_a_disagreement(folder, tmp_path):
+    """What the check above finds: one value of one folder one ulp off (far inside the
+    cross-check's tolerance, which ci_check --cross-check applies)."""
+    for case in cases():
+        name = f"{case[3]}_ref.csv"
+        (model_folder(tmp_path, *case)).mkdir(parents=True)
+        shutil.copyfile(model_folder(folder, *case) / name, model_folder(tmp_path, *case) / name)
+    path = model_folder(tmp_path, "3.0", "me", "aarch64-linux", "AttitudePropagator") / \
+        "AttitudePropagator_ref.csv"
+    lines = path.read_text().splitlines()
+    cells = lines[301].split(",")
+    values = cells[1].split()
+    values[2] = repr(float(np.nextafter(float(values[2]), np.inf)))
+    cells[1] = " ".join(values)
+    lines[301] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+    assert disagreements(tmp_path) == ["3.0 me aarch64-linux AttitudePropagator: 1 values differ"]
