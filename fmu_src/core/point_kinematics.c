@@ -7,19 +7,31 @@ static void cross(const double a[3], const double b[3], double out[3]) {
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* A copy of the three components of a vector. */
+static void load(const double *from, double to[3]) {
+    to[0] = from[0], to[1] = from[1], to[2] = from[2];
+}
+
 void ak_point_kinematics(const ak_point_inputs *in, ak_point_outputs *out) {
-    double omega_x_r[3], omega_x_r_dot[3];
-    cross(in->omega, in->r, omega_x_r);
-    cross(in->omega, in->r_dot, omega_x_r_dot);
-    cross(in->alpha, in->r, out->a_tangential);
-    cross(in->omega, omega_x_r, out->a_centripetal);
+    /* The inputs copied first: out may not alias them, but the compiler cannot know, and would
+     * read them again after every store. */
+    double omega[3], alpha[3], r[3], r_dot[3];
+    load(in->omega, omega), load(in->alpha, alpha), load(in->r, r), load(in->r_dot, r_dot);
+    double omega_x_r[3], omega_x_r_dot[3], tangential[3], centripetal[3];
+    cross(omega, r, omega_x_r);
+    cross(omega, r_dot, omega_x_r_dot);
+    cross(alpha, r, tangential);
+    cross(omega, omega_x_r, centripetal);
+    ak_point_outputs o;
     for (int k = 0; k < 3; k++) {
-        out->a_coriolis[k] = 2.0 * omega_x_r_dot[k];
-        out->v_P[k] = in->v_O[k] + omega_x_r[k] + in->r_dot[k];
-        out->a_P[k] = in->a_O[k] + out->a_tangential[k] + out->a_centripetal[k] +
-                      out->a_coriolis[k] + in->r_ddot[k];
-        out->specific_force[k] = out->a_P[k] - in->g[k];
+        o.a_tangential[k] = tangential[k];
+        o.a_centripetal[k] = centripetal[k];
+        o.a_coriolis[k] = 2.0 * omega_x_r_dot[k];
+        o.v_P[k] = in->v_O[k] + omega_x_r[k] + r_dot[k];
+        o.a_P[k] = in->a_O[k] + tangential[k] + centripetal[k] + o.a_coriolis[k] + in->r_ddot[k];
+        o.specific_force[k] = o.a_P[k] - in->g[k];
     }
+    *out = o;
 }
 
 /* d(a x b) = da x b + a x db */

@@ -47,7 +47,13 @@ static ak_eval_status evaluate(ak_model_data *data) {
     ak_point_outputs out;
     ak_point_kinematics(&in, &out);
     const double *computed = (const double *)&out;
+    /* One test of all 18 (x - x is 0 for a finite x, NaN for an infinite one), then the first
+     * one that overflowed, for the message. */
+    double zero = 0.0;
     for (int k = 0; k < PK_N_OUTPUTS; k++) {
+        zero += computed[k] - computed[k];
+    }
+    for (int k = 0; zero != 0.0 && k < PK_N_OUTPUTS; k++) {
         if (!isfinite(computed[k])) {
             ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
                          "%s: %s = %g: a product of the inputs overflows (|omega| = %g, "
