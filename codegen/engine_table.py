@@ -86,7 +86,7 @@ def table():
         for model, version, fmu in fmus():
             lines.append(f"| {engine} | {model} | Co-Simulation | {version} | "
                          f"{cell(compare, engine, model, fmu)} |")
-        lines.append(f"| {engine} | Tumbling.ssp (the three models) | Co-Simulation | 2.0 | "
+        lines.append(f"| {engine} | Tumbling.ssp (the four models) | Co-Simulation | 2.0 | "
                      f"{cell(compare_ssp, engine)} |")
     return "\n".join(lines)
 

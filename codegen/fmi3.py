@@ -101,7 +101,7 @@ def driver_models_c(models):
                   f"     {vr_list(outputs)}, "
                   "{" + ", ".join(str(n_elements(e)) for e in outputs) + "}, "
                   f"{len(outputs)}, {sum(n_elements(e) for e in outputs)},",
-                  f"     {parameters['sequence']}, {parameters.get('frame', 0)},",
+                  f"     {parameters.get('sequence', 0)}, {parameters.get('frame', 0)},",
                   f"     {vr_list(knowns) if knowns else '{0}'}, {len(knowns)}, "
                   f"{sum(n_elements(e) for e in knowns)},",
                   f"     {int(m.capabilities['max_output_derivative_order'] > 0)}}},"]
@@ -193,10 +193,14 @@ def model_description(model):
         out += [f'    <Unit name="{unit}">', f"      <BaseUnit {base}/>",
                 f'      <DisplayUnit name="{unit.replace("rad", "deg")}" '
                 f'factor="57.295779513082323"/>', "    </Unit>"]
-    out += ['    <Unit name="1/s">', '      <BaseUnit s="-1"/>', "    </Unit>",
-            '    <Unit name="s">', '      <BaseUnit s="1"/>', "    </Unit>",
-            "  </UnitDefinitions>", "", "  <TypeDefinitions>"]
     used = {s.type for s in model.scalars}
+    # "s" always: the independent variable time has it.
+    units = dict.fromkeys(["s"] + [t[1] for name, t in project.OPTIONAL_TYPES.items() if name in used])
+    out += ['    <Unit name="1/s">', '      <BaseUnit s="-1"/>', "    </Unit>"]
+    for unit in units:
+        out += [f'    <Unit name="{unit}">', f"      <BaseUnit {project.OPTIONAL_UNITS[unit]}/>",
+                "    </Unit>"]
+    out += ["  </UnitDefinitions>", "", "  <TypeDefinitions>"]
     types = {**project.TYPES,
              **{k: v for k, v in project.OPTIONAL_TYPES.items() if k in used}}
     for name, (quantity, unit, display) in types.items():

@@ -272,8 +272,9 @@ def model_description(model):
     used = {s.type for s in model.scalars}
     types = dict(project.TYPES)
     types.update({name: t for name, t in project.OPTIONAL_TYPES.items() if name in used})
-    if "Time" in used:
-        out += ['    <Unit name="s">', '      <BaseUnit s="1"/>', "    </Unit>"]
+    for unit in dict.fromkeys(t[1] for name, t in project.OPTIONAL_TYPES.items() if name in used):
+        out += [f'    <Unit name="{unit}">', f"      <BaseUnit {project.OPTIONAL_UNITS[unit]}/>",
+                "    </Unit>"]
     out += ["  </UnitDefinitions>", "", "  <TypeDefinitions>"]
     for name, (quantity, unit, display) in types.items():
         attributes = "".join(f' {key}="{value}"' for key, value in
@@ -367,7 +368,8 @@ def cmake_lists(models):
            f"set(AK_FMI2_HEADERS\n{cmake_list(project.FMI2_HEADERS)})",
            f"set(AK_FMI3_SOURCES\n{cmake_list(fmi3.FMI3_SOURCES)})",
            f"set(AK_FMI3_HEADERS\n{cmake_list(fmi3.FMI3_HEADERS)})",
-           "set(AK_FMI3_MODELS ${AK_MODELS})  # the same list under its former name"]
+           "set(AK_FMI3_MODELS ${AK_MODELS})  # the same list under its former name",
+           "set(AK_CORE_TESTS" + "".join(f"\n  {t}" for m in models for t in m.core_tests) + ")"]
     for m in models:
         figures = " ".join(f"documentation/{src}" for src, _, _ in m.figures)
         out += [f"set(AK_FMI3_ARRAYS_{m.name}\n  fmu_src/models/{m.name}/fmi3/{m.name}_fmi3_arrays.c)",

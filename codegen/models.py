@@ -45,6 +45,7 @@ class Model:
     headers: list
     core_sources: list     # the core's sources it calls (description.py's CORE), fmu_src/-relative
     core_headers: list     # the core's headers those and the model's sources include
+    core_tests: list       # the unit tests of its core files (description.py's CORE_TESTS), root-relative
     capabilities: dict
     enumerations: dict
     arrays: list           # the description's entries, as written
@@ -178,7 +179,7 @@ def load(name):
                 vrs.append(by_name[name].vr)
             else:
                 vrs += [t.vr for t in scalars if t.base == name]
-        return sorted(vrs)
+        return sorted(set(vrs))  # an element named twice (e.g. by two terms) is one dependency
 
     for s in sorted(scalars, key=lambda s: s.vr):
         if s.computed_by and "depends" not in _entry(d, s.base):
@@ -202,6 +203,7 @@ def load(name):
         documentation=d.DOCUMENTATION, figures=getattr(d, "FIGURES", []),
         sources=sources, headers=[f"{folder}/{name}_variables.h"], core_sources=core_sources,
         core_headers=_included_core_headers(core_sources + sources),
+        core_tests=getattr(d, "CORE_TESTS", []),
         capabilities=d.CAPABILITIES, enumerations=enumerations, arrays=d.VARIABLES,
         scalars=scalars)
 

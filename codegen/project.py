@@ -2,6 +2,7 @@
 sequences, the declared types and the source files of the core and the FMI layer. Each model adds
 its own description (fmu_src/models/<Model>/description.py); `python -m codegen` writes every file
 that repeats these facts (docs/architecture.md lists them)."""
+import pathlib
 
 VERSION = "0.4.0"
 AUTHOR = "AngularKinematics developers"
@@ -55,7 +56,12 @@ TYPES = {
 # Declared types written only into the modelDescription.xml of a model that uses them.
 OPTIONAL_TYPES = {
     "Time": ("Time", "s", None),
+    "Length": ("Length", "m", None),
+    "Velocity": ("Velocity", "m/s", None),
+    "Acceleration": ("Acceleration", "m/s2", None),
 }
+# The units of the optional types: the SI base units they are made of (<BaseUnit> attributes).
+OPTIONAL_UNITS = {"s": 's="1"', "m": 'm="1"', "m/s": 'm="1" s="-1"', "m/s2": 'm="1" s="-2"'}
 # Enumerations every model may use; a model's description can add its own.
 ENUMERATIONS = {
     "Sequence": dict(
@@ -64,20 +70,33 @@ ENUMERATIONS = {
         items=[(name, sequence_description(name)) for name in SEQUENCES]),
 }
 
-# Sources, relative to fmu_src/, in the order they are compiled and listed in <SourceFiles>.
+# Sources, relative to fmu_src/, in the order they are compiled and listed in <SourceFiles>: these
+# first, in the order they have always had, then any other file of fmu_src/core/ and
+# fmu_src/elementary/ by name (a model's new core file needs no line here).
 # The core calls the project's own elementary functions (fmu_src/elementary/, not libm's sin, cos,
 # atan, atan2): they are part of it.
-CORE_SOURCES = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation.c",
-                "core/kinematics_partials.c", "core/kinematics_euler_rates.c",
-                "core/kinematics_sequences.c", "core/kinematics_general_jacobian.c", "core/attitude.c",
-                "elementary/elementary_reduce.c", "elementary/elementary_atan.c",
-                "elementary/elementary_atan2.c"]
-CORE_HEADERS = ["core/sequences.h", "core/kinematics_general.h", "core/kinematics_chain.h",
-                "core/kinematics_sequences.h", "core/kinematics_general_jacobian.h", "core/attitude.h",
-                "core/attitude_sequences.h",
-                "elementary/elementary.h", "elementary/elementary_sincos_three.h",
-                "elementary/elementary_arc_kernel.h", "elementary/elementary_double_double.h",
-                "elementary/elementary_coefficients.h"]
+_CORE_SOURCES_FIRST = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation.c",
+                       "core/kinematics_partials.c", "core/kinematics_euler_rates.c",
+                       "core/kinematics_sequences.c", "core/kinematics_general_jacobian.c",
+                       "core/attitude.c", "elementary/elementary_reduce.c",
+                       "elementary/elementary_atan.c", "elementary/elementary_atan2.c"]
+_CORE_HEADERS_FIRST = ["core/sequences.h", "core/kinematics_general.h", "core/kinematics_chain.h",
+                       "core/kinematics_sequences.h", "core/kinematics_general_jacobian.h",
+                       "core/attitude.h", "core/attitude_sequences.h",
+                       "elementary/elementary.h", "elementary/elementary_sincos_three.h",
+                       "elementary/elementary_arc_kernel.h", "elementary/elementary_double_double.h",
+                       "elementary/elementary_coefficients.h"]
+
+
+def _core_files(first, suffix):
+    fmu_src = pathlib.Path(__file__).resolve().parent.parent / "fmu_src"
+    found = sorted(str(path.relative_to(fmu_src)) for folder in ("core", "elementary")
+                   for path in (fmu_src / folder).glob(f"*{suffix}"))
+    return [f for f in first if f in found] + [f for f in found if f not in first]
+
+
+CORE_SOURCES = _core_files(_CORE_SOURCES_FIRST, ".c")
+CORE_HEADERS = _core_files(_CORE_HEADERS_FIRST, ".h")
 # The FMI runtime under both FMI layers (fmu_src/runtime/), FMI-independent.
 RUNTIME_SOURCES = ["runtime/instance.c", "runtime/outputs.c", "runtime/lifecycle.c",
                    "runtime/values.c", "runtime/stepping.c", "runtime/continuous.c",
@@ -95,7 +114,7 @@ FMI2_HEADERS = ["fmi2/fmi2_layer.h"] + RUNTIME_HEADERS
 # The models, each a folder fmu_src/models/<name>/ with description.py, each built as an FMI 2.0
 # FMU (dist/<name>.fmu) and an FMI 3.0 FMU (dist/fmi3/<name>.fmu). The one list: CMake reads it
 # from cmake/generated.cmake, the scripts and the tests from here (import codegen.project).
-MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator"]
+MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator", "PointKinematics"]
 FMI3_MODELS = MODELS  # the same list under its former name, while tests still read it
 
 # The model whose modelDescription.xml the repository root holds a generated copy of (the layout

@@ -167,7 +167,9 @@ static void run_case(const fmi3_api *api, const driver_model *m, int64_t sequenc
         return;
     }
     printf("case sequence %lld frame %lld\n", (long long)sequence, (long long)frame);
-    status("set sequence", api->set_int64(instance, &m->sequence, 1, &sequence, 1));
+    if (m->sequence != 0) {
+        status("set sequence", api->set_int64(instance, &m->sequence, 1, &sequence, 1));
+    }
     if (m->frame != 0) {
         status("set frame", api->set_int64(instance, &m->frame, 1, &frame, 1));
     }
@@ -245,7 +247,7 @@ int main(int argc, char **argv) {
     if (cross_check) {
         return fmi3_driver_cross_check(&api, m, argc - 4, argv + 4);
     }
-    for (int64_t sequence = 1; sequence <= 24; sequence++) {
+    for (int64_t sequence = 1; sequence <= (m->sequence != 0 ? 24 : 1); sequence++) {
         for (int64_t frame = 1; frame <= (m->frame != 0 ? 2 : 1); frame++) {
             run_case(&api, m, sequence, frame, steps);
         }

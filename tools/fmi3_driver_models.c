@@ -22,6 +22,12 @@ const driver_model DRIVER_MODELS[] = {
      43, 42,
      {0, 3, 6}, 3, 10,
      0},
+    {"PointKinematics", "{4289c8dc-268d-4454-a847-afb72164dd53}",
+     {0, 3, 6, 9, 12, 15, 18, 21}, 8, 24,
+     {24, 27, 30, 33, 36, 39}, {3, 3, 3, 3, 3, 3}, 6, 18,
+     0, 0,
+     {0, 3, 6, 9, 12, 15, 18, 21}, 8, 24,
+     0},
 };
 
 const size_t N_DRIVER_MODELS = sizeof DRIVER_MODELS / sizeof DRIVER_MODELS[0];

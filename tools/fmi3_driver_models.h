@@ -18,7 +18,7 @@ typedef struct {
     fmi3ValueReference outputs[DRIVER_MAX_ARRAYS];
     size_t output_elements[DRIVER_MAX_ARRAYS];
     size_t n_outputs, n_output_values;
-    fmi3ValueReference sequence, frame; /* frame 0: the model has none */
+    fmi3ValueReference sequence, frame; /* 0: the model has none */
     /* Directional derivatives are taken with respect to the inputs and the continuous states;
      * n_knowns 0: the model provides none. */
     fmi3ValueReference knowns[DRIVER_MAX_ARRAYS];

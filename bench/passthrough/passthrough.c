@@ -1,16 +1,17 @@
 /* PassThrough: the floor of the fmpy comparison and of the C drivers' FMI 2 cycles. A
- * co-simulation FMU with the same 9 inputs and 12 outputs (same names, same value references) as
- * AngularKinematics but no arithmetic: output k (value reference 9 + k) is input k mod 9. It only
- * checks value references, so that its cost is what an importer pays for any FMU of this
- * interface. The C drivers use as many of its variables as the model they time: AngularKinematics
- * 9 inputs and 12 outputs, AttitudePropagator 3 inputs (0..2, omega) and 4 or 7 outputs (9..15,
- * q and theta); modelDescription.xml describes the first (fmpy loads it). Functions that a
- * benchmark does not need return fmi2Error. */
+ * co-simulation FMU of 24 inputs (value references 0 to 23) and 18 outputs (24 to 41) with no
+ * arithmetic: a variable below 24 shows that input, output k (value reference 24 + k) shows input
+ * k. It only checks value references, so that its cost is what an importer pays for any FMU of
+ * this interface. The C drivers use as many of its variables as the model they time, each get
+ * and set costing the same for any value reference: AngularKinematics sets 9 (0..8) and gets 12
+ * (9..20), AttitudePropagator sets 3 (0..2, omega) and gets 4 or 7 (9..15, q and theta),
+ * PointKinematics sets 24 and gets 18 (24..41); modelDescription.xml describes the first (fmpy
+ * loads it). Functions that a benchmark does not need return fmi2Error. */
 #include <string.h>
 
 #include "fmi2Functions.h"
 
-enum { N_INPUTS = 9, N_OUTPUTS = 12, N_VARIABLES = N_INPUTS + N_OUTPUTS };
+enum { N_INPUTS = 24, N_OUTPUTS = 18, N_VARIABLES = N_INPUTS + N_OUTPUTS };
 
 typedef struct {
     fmi2CallbackFunctions functions;
@@ -18,11 +19,11 @@ typedef struct {
     double time;
 } passthrough;
 
-/* The input each variable shows: itself for an input, input k mod 9 for output k. A table, so
- * that a get costs what any FMU's copy of values costs (the C drivers time it beside the models'
- * cycles, bench/bench_passthrough.h). */
-static const unsigned char SOURCE[N_VARIABLES] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1,
-                                                  2, 3, 4, 5, 6, 7, 8, 0, 1, 2};
+/* The input each variable shows. A table, so that a get costs what any FMU's copy of values costs
+ * (the C drivers time it beside the models' cycles, bench/bench_passthrough.h). */
+static const unsigned char SOURCE[N_VARIABLES] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20,
+    21, 22, 23, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17};
 
 const char *fmi2GetTypesPlatform(void) {
     return fmi2TypesPlatform;

@@ -5,7 +5,7 @@ from fmpy.ssp.ssd import Parameter, ParameterSet, read_ssd
 from fmpy.ssp.simulation import simulate_ssp
 
 from examples.engines import NANOSECONDS, STEP, STEPS
-from examples.ssp.make_tumbling_ssp import COMPONENTS, scalars
+from examples.ssp.make_tumbling_ssp import BINDINGS, COMPONENTS, PARAMETER_SET, scalars
 
 
 def outputs():
@@ -15,13 +15,15 @@ def outputs():
 
 
 def run_fmpy(ssp):
-    # simulate_ssp leaves the .ssd's parameter bindings aside: hand the propagator's over, named
-    # by the component's path as its parameter_set wants.
-    propagator = next(e for e in read_ssd(str(ssp)).system.elements if e.name == "propagator")
-    bound = propagator.parameterBindings[0].parameterValues[0].parameters
-    parameters = ParameterSet(name="omega")
-    parameters.parameters = [Parameter(name=f"propagator.{p.name}", type=p.type, value=p.value)
-                             for p in bound]
+    # simulate_ssp leaves the .ssd's parameter bindings aside: hand them over, named by the
+    # component's path as its parameter_set wants.
+    parameters = ParameterSet(name=PARAMETER_SET)
+    parameters.parameters = []
+    for element in read_ssd(str(ssp)).system.elements:
+        if element.name in BINDINGS:
+            bound = element.parameterBindings[0].parameterValues[0].parameters
+            parameters.parameters += [Parameter(name=f"{element.name}.{p.name}", type=p.type,
+                                                value=p.value) for p in bound]
     result = simulate_ssp(str(ssp), stop_time=STEPS * STEP, step_size=STEP,
                           parameter_set=parameters)
     assert len(result) == STEPS  # row k: time t_k, the values after the step from t_k
@@ -55,7 +57,7 @@ def run_ecos(ssp):
     EcosLib.set_log_level("warn")
     simulation = EcosSimulation(ssp_path=str(ssp), step_size=STEP)
     try:
-        assert simulation.init(0.0, "omega")  # Ecos applies a parameter set when init names it
+        assert simulation.init(0.0, PARAMETER_SET)  # Ecos applies a parameter set init names
         values = {f"{e}.{n}": np.empty(STEPS) for e, n in outputs()}
         for k in range(STEPS):
             simulation.step(1)

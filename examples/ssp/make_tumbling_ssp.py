@@ -1,5 +1,5 @@
-"""Builds dist/ssp/Tumbling.ssp, a self-contained SSP 1.0 system of the three built FMUs that fmpy,
-libcosim and Ecos all run (tests/python/test_engines_ssp.py): components and connections only, no
+"""Builds dist/ssp/Tumbling.ssp, a self-contained SSP 1.0 system of the four built FMUs that fmpy,
+libcosim and Ecos all run (tests/python/test_ssp_engines.py): components and connections only, no
 connector of the system's own, which libcosim 0.0.6 and Ecos 0.7.2 refuse.
 
     AttitudePropagator (omega held at OMEGA by a parameter binding: a body tumbling at a constant
@@ -7,6 +7,9 @@ connector of the system's own, which libcosim 0.0.6 and Ecos 0.7.2 refuse.
       -> AngularKinematics -> omega_fixed
       -> EulerRates (frame = fixed, its default), with theta from the propagator
       -> theta_dot, singularity_distance
+    AttitudePropagator -> omega_body, alpha_body
+      -> PointKinematics (an accelerometer at the lever arm LEVER_ARM, bound as r; in free fall:
+         g = 0 and a_O = 0) -> specific_force, a_centripetal
 
 The propagator is the source: the inputs of the other two change at every step. The root system
 carries OMSimulator's vendor annotation (org.openmodelica, oms:SimulationInformation), which
@@ -19,27 +22,36 @@ from examples.ssp.make_ssp import NS, ROOT, command, connectors_xml, scalars, wr
 
 STEP, STOP = 2.0 ** -6, 100 * 2.0 ** -6
 OMEGA = (0.4, -0.3, 0.5)  # rad/s, the propagator's input, held
+LEVER_ARM = (0.5, 0.2, -0.1)  # m, the accelerometer's position relative to the body's centre
+# The inputs no connection feeds, bound by one parameter set each (its name: PARAMETER_SET).
+BINDINGS = {"propagator": ("omega", OMEGA), "accelerometer": ("r", LEVER_ARM)}
+PARAMETER_SET = "initial"
 OMS = "https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd"
 SSV = "http://ssp-standard.org/SSP1/SystemStructureParameterValues"
 # element name -> (FMU, inputs, outputs): the connectors of each component, FMU variable names.
 COMPONENTS = {
-    "propagator": ("AttitudePropagator", [], ["theta", "theta_dot", "omega_fixed"]),
+    "propagator": ("AttitudePropagator", [], ["theta", "theta_dot", "omega_fixed", "omega_body",
+                                             "alpha_body"]),
     "kinematics": ("AngularKinematics", ["theta", "theta_dot"], ["omega_fixed"]),
     "rates": ("EulerRates", ["theta", "omega"], ["theta_dot", "singularity_distance"]),
+    "accelerometer": ("PointKinematics", ["omega", "alpha"], ["specific_force", "a_centripetal"]),
 }
 CONNECTIONS = [("propagator", "theta", "kinematics", "theta"),
                ("propagator", "theta_dot", "kinematics", "theta_dot"),
                ("propagator", "theta", "rates", "theta"),
-               ("kinematics", "omega_fixed", "rates", "omega")]
+               ("kinematics", "omega_fixed", "rates", "omega"),
+               ("propagator", "omega_body", "accelerometer", "omega"),
+               ("propagator", "alpha_body", "accelerometer", "alpha")]
 
 
-def binding_xml(indent):
-    """The propagator's omega, held: an inline parameter set (its inputs are no connectors, so no
-    master sets them)."""
+def binding_xml(element, indent):
+    """An input of the element held by a parameter binding: an inline parameter set (its inputs
+    are no connectors, so no master sets them)."""
+    variable, values = BINDINGS[element]
     lines = [f"{indent}<ssd:ParameterBindings>", f"{indent}  <ssd:ParameterBinding>",
              f"{indent}    <ssd:ParameterValues>",
-             f'{indent}      <ssv:ParameterSet version="1.0" name="omega"><ssv:Parameters>']
-    for name, value in zip(scalars("omega"), OMEGA):
+             f'{indent}      <ssv:ParameterSet version="1.0" name="{PARAMETER_SET}"><ssv:Parameters>']
+    for name, value in zip(scalars(variable), values):
         lines.append(f'{indent}        <ssv:Parameter name="{name}"><ssv:Real value="{value!r}"/>'
                      f"</ssv:Parameter>")
     return lines + [f"{indent}      </ssv:Parameters></ssv:ParameterSet>",
@@ -64,14 +76,15 @@ def ssd_xml():
              f'<ssd:SystemStructureDescription xmlns:ssd="{NS["ssd"]}" xmlns:ssc="{NS["ssc"]}"',
              f'    xmlns:ssv="{SSV}" version="1.0" name="Tumbling">',
              '  <ssd:System name="Tumbling" description="a body tumbling at a constant rate: '
-             'AttitudePropagator -> AngularKinematics -> EulerRates">',
+             'AttitudePropagator -> AngularKinematics -> EulerRates, and PointKinematics: an '
+             'accelerometer at a lever arm">',
              "    <ssd:Elements>"]
     for element, (model, inputs, outputs) in COMPONENTS.items():
         lines.append(f'      <ssd:Component name="{element}" '
                      f'type="application/x-fmu-sharedlibrary" source="resources/{model}.fmu">')
         lines += connectors_xml(inputs, outputs, "        ")
-        if element == "propagator":
-            lines += binding_xml("        ")
+        if element in BINDINGS:
+            lines += binding_xml(element, "        ")
         lines.append("      </ssd:Component>")
     lines += ["    </ssd:Elements>", "    <ssd:Connections>"]
     for start_element, start, end_element, end in CONNECTIONS:

@@ -24,8 +24,8 @@
 
 /* Upper bounds over all models, for the arrays of an instance. */
 #define AK_MAX_VARIABLES 80
-#define AK_MAX_INPUTS 9
-#define AK_MAX_DEPENDENCIES 9
+#define AK_MAX_INPUTS 24
+#define AK_MAX_DEPENDENCIES 13
 #define AK_MAX_STATES 4
 /* The knowns of a directional derivative: the inputs, then the continuous states. */
 #define AK_MAX_KNOWNS (AK_MAX_INPUTS + AK_MAX_STATES)

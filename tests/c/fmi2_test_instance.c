@@ -8,9 +8,12 @@
 #include "elementary.h"
 #include "kinematics_123.h"
 
-_Static_assert(AK_TEST_MAX_INPUTS == 9, "nine values below, one per input of the largest model");
-const fmi2Real AK_TEST_INPUTS[AK_TEST_MAX_INPUTS] = {0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8};
-const fmi2ValueReference AK_TEST_INPUT_VRS[AK_TEST_MAX_INPUTS] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+_Static_assert(AK_TEST_MAX_INPUTS == 24, "24 values below, one per input of the largest model");
+const fmi2Real AK_TEST_INPUTS[AK_TEST_MAX_INPUTS] = {
+    0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8, 0.9, -1.2, 0.4,
+    1.7, -0.6, 0.2, -0.35, 0.15, 0.05, 0.01, -0.02, 0.03, 0.0, 0.0, -9.81};
+const fmi2ValueReference AK_TEST_INPUT_VRS[AK_TEST_MAX_INPUTS] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23};
 
 const unsigned int AK_TEST_STATES[] = {
     AK_IN_INSTANTIATED,           AK_IN_INITIALIZATION_MODE,

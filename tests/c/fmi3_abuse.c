@@ -77,9 +77,9 @@ static size_t output_arrays(fmi3ValueReference arrays[AK_MAX_VARIABLES], size_t 
 }
 
 /* The inputs of an instance at a step: exact binary fractions in [-2, 2). */
-static void inputs_at(unsigned int instance, unsigned int step, double u[9]) {
+static void inputs_at(unsigned int instance, unsigned int step, double u[AK_MAX_INPUTS]) {
     uint64_t x = 0x9e3779b97f4a7c15ULL * (instance + 1) ^ (0xbf58476d1ce4e5b9ULL * (step + 1));
-    for (int k = 0; k < 9; k++) {
+    for (int k = 0; k < AK_MAX_INPUTS; k++) {
         x = x * 6364136223846793005ULL + 1442695040888963407ULL;
         u[k] = (double)(x >> 11) * (4.0 / 9007199254740992.0) - 2.0;
     }
@@ -98,15 +98,15 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
         return 0;
     }
     const int64_t sequence = sequence_of(id);
-    /* The sequence parameter (70 AngularKinematics, 22 EulerRates), found by name. */
-    fmi3ValueReference vr_sequence = 0;
+    /* The sequence parameter (70 AngularKinematics, 22 EulerRates), found by name, if any. */
     for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
         const ak_variable *v = ak_variable_of((unsigned int)vr);
         if (v != NULL && strcmp(v->name, "sequence") == 0) {
-            vr_sequence = (fmi3ValueReference)vr;
+            const fmi3ValueReference vr_sequence = (fmi3ValueReference)vr;
+            ak_check(fmi3SetInt64(instance, &vr_sequence, 1, &sequence, 1) == fmi3OK,
+                     "set sequence");
         }
     }
-    ak_check(fmi3SetInt64(instance, &vr_sequence, 1, &sequence, 1) == fmi3OK, "set sequence");
     ak_check(fmi3EnterInitializationMode(instance, fmi3False, 0, 0, fmi3False, 0) == fmi3OK,
              "enter");
     ak_check(fmi3ExitInitializationMode(instance) == fmi3OK, "exit");
@@ -119,7 +119,7 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
     double t = 0.0;
     fmi3FMUState state = NULL;
     for (unsigned int step = 0; step < steps; step++) {
-        double u[9], y[AK_MAX_VARIABLES];
+        double u[AK_MAX_INPUTS], y[AK_MAX_VARIABLES];
         inputs_at(id, step, u);
         if (AK_MODEL.evaluate_in_step) {
             u[1] = 0.5 * u[1]; /* EulerRates: keep theta[2] in (-1, 1), away from singularities;
@@ -268,7 +268,7 @@ static void soak(unsigned long steps) {
     const size_t n_outputs = output_arrays(outputs, &n_values);
     double t = 0.0, y[AK_MAX_VARIABLES];
     for (unsigned long step = 0; step < steps; step++) {
-        double u[9];
+        double u[AK_MAX_INPUTS];
         inputs_at(7, (unsigned int)step, u);
         u[1] *= 0.5;
         fmi3Boolean b;

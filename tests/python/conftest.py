@@ -162,8 +162,9 @@ def c_table():
 
 
 # The inputs every bad-input and state-machine test starts from: the ones the C driver
-# (tests/c/test_fmi2_calls.c) initializes every instance with, value references 0 to 8.
-VALID_INPUTS = [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8]
+# (tests/c/fmi2_test_instance.c) initializes every instance with, value references 0 to 23.
+VALID_INPUTS = [0.3, -0.7, 1.1, 0.5, -1.5, 2.0, 3.0, -0.25, 0.8, 0.9, -1.2, 0.4,
+                1.7, -0.6, 0.2, -0.35, 0.15, 0.05, 0.01, -0.02, 0.03, 0.0, 0.0, -9.81]
 
 
 class Model:
@@ -180,6 +181,8 @@ class Model:
         self.outputs = [v["name"] for v in variables if v["causality"] == "output"]
         self.parameters = [v["name"] for v in variables if v["causality"] == "parameter"]
         self.valid_inputs = dict(zip(self.inputs, VALID_INPUTS))
+        # What the shared tests start an instance with: sequence 11 where the model has one.
+        self.start_parameters = {"sequence": 11} if "sequence" in self.parameters else {}
         self.largest_vr = max(v["valueReference"] for v in variables)
 
     def __repr__(self):

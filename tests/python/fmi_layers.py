@@ -64,10 +64,10 @@ class Layer:
         return instance.set(dict(zip(names, np.split(np.asarray(flat, dtype=float), ends))))
 
     def started(self, new_instance, model, name):
-        """Initialized with sequence 11 and the model's valid inputs (FMI 2: three input
-        derivatives too), stop time 10, stepped to t = 0.25."""
+        """Initialized with sequence 11 (where the model has one) and the model's valid inputs
+        (FMI 2: three input derivatives too), stop time 10, stepped to t = 0.25."""
         instance = new_instance(model.name, name=name, fmi_version=self.version)
-        instance.initialize(stop_time=10.0, parameters={"sequence": 11})
+        instance.initialize(stop_time=10.0, parameters=model.start_parameters)
         assert self.set_inputs(instance, list(model.valid_inputs.values())) == 0
         if self.version == 2:
             names = model.inputs
@@ -77,17 +77,21 @@ class Layer:
         return instance
 
     def values(self, instance):
-        """The bits of every input and output and the value of the parameter sequence (FMI 2:
-        and the bits of the last successful time)."""
+        """The bits of every input and output and the value of the parameter sequence if the
+        model has one (FMI 2: and the bits of the last successful time)."""
+        has_sequence = "sequence" in instance.vr
         if self.version == 2:
             time = np.array([instance.fmu.getRealStatus(2)])  # fmi2LastSuccessfulTime
             reals = np.concatenate([time, instance.get(observable(instance))])
-            return reals.view(np.uint64).tolist() + instance.get_integer(["sequence"])
-        values = instance.get(instance.inputs() + instance.outputs())
+            return reals.view(np.uint64).tolist() + \
+                (instance.get_integer(["sequence"]) if has_sequence else [])
+        values = np.concatenate(list(instance.get(instance.inputs() + instance.outputs()).values()))
+        if not has_sequence:
+            return values.view(np.uint64).tolist()
         sequence = (ctypes.c_int64 * 1)()
         assert instance.call("fmi3GetInt64", (ctypes.c_uint32 * 1)(instance.vr["sequence"]), 1,
                              sequence, 1) == 0
-        return np.concatenate(list(values.values())).view(np.uint64).tolist() + [sequence[0]]
+        return values.view(np.uint64).tolist() + [sequence[0]]
 
     def step(self, instance, t, h):
         """(status, the instance's time after the step)."""

@@ -47,9 +47,11 @@ def test_fmi3_outputs_bit_identical_to_fmi2(pair, report):
     derivatives = fmi3.md.coSimulation.providesDirectionalDerivative
     rng = np.random.default_rng(12)
     compared = 0
-    for sequence in range(1, 25):
+    sequences = range(1, 25) if "sequence" in fmi3.vr else [None]
+    for sequence in sequences:
         for frame in frames(fmi3):
-            parameters = {"sequence": sequence} | ({"frame": frame} if frame else {})
+            parameters = ({"sequence": sequence} if sequence else {}) | \
+                ({"frame": frame} if frame else {})
             assert fmi2.call("fmi2Reset") == 0 and fmi3.call("fmi3Reset") == 0
             fmi2.initialize(parameters=parameters)
             fmi3.initialize(parameters=parameters)
@@ -77,7 +79,7 @@ def test_fmi3_outputs_bit_identical_to_fmi2(pair, report):
                 if int(fmi3.md.coSimulation.maxOutputDerivativeOrder or 0) >= 1:
                     check_output_derivatives(fmi2, fmi3, outputs, output_vrs)
     assert compared > 0
-    report(f"{model}: {compared} output values over 24 sequences x {len(frames(fmi3))} frame(s), "
+    report(f"{model}: {compared} output values over {len(sequences)} sequence(s) x {len(frames(fmi3))} frame(s), "
            "all bit-identical to the FMI 2 FMU")
 
 

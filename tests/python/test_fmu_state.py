@@ -89,7 +89,7 @@ def test_state_restores_everything_bit_for_bit_also_in_another_instance(layer, m
     assert len(data) == layer.expected_size(model)
     assert data[:8] == layer.magic
     # Move on (other inputs, a step), then back: the values and the time.
-    assert layer.set_inputs(first, list(OTHER.values())[:len(model.inputs)]) == 0
+    assert layer.set_inputs(first, np.resize(list(OTHER.values()), len(model.inputs))) == 0
     assert layer.step(first, 0.25, 0.5) == (0, 0.75)
     assert layer.values(first) != saved
     assert first.call(layer.set, state) == 0
