@@ -13,6 +13,8 @@
 #   5. AttitudePropagator (bench/bench_attitude.c): set omega + doStep + get q (and theta), FMI 2
 #      and FMI 3, vs. the bare quaternion update (and the update + angle extraction), frozen
 #      copies in bench/attitude_anchor.c, over the largest step count of --steps;
+#   5b. PointKinematics (bench/bench_point.c): set 24 + doStep + get 18, FMI 2, vs. the
+#      pass-through's cycle with the same counts plus the hand-written formula;
 #   6. the project's sincos beside the C library's sin and cos (bench/bench_sincos.c), and three
 #      atan2 at once (ak_atan2_three) beside three ak_atan2 and three C library atan2
 #      (bench/bench_atan2.c);
@@ -312,6 +314,13 @@ goals_table() {
       "${passthroughs[@]}"
     echo
   done
+  # PointKinematics (bench/bench_point.c): its FMI 2 cycle beside the pass-through's cycle with
+  # the same counts plus its hand-written formula (bench/point_anchor.c).
+  echo "### PointKinematics"
+  echo
+  build/bench/bench_point build/fmu/binaries/linux64/PointKinematics.so \
+    build/passthrough/PassThrough.so "${steps##*,}" "$repeats"
+  echo
   # The project's sincos beside the C library's (bench/bench_sincos.c).
   build/bench/bench_sincos --calls "$(awk -v c="$calls" 'BEGIN { print (c < 4096 ? 4096 : 40 * c) }')" --repeats "$repeats"
   echo

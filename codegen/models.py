@@ -46,6 +46,7 @@ class Model:
     core_sources: list     # the core's sources it calls (description.py's CORE), fmu_src/-relative
     core_headers: list     # the core's headers those and the model's sources include
     core_tests: list       # the unit tests of its core files (description.py's CORE_TESTS), root-relative
+    cross_check_outputs: list  # the outputs of its cross-check results (CROSS_CHECK_OUTPUTS), FMI 2 names
     capabilities: dict
     enumerations: dict
     arrays: list           # the description's entries, as written
@@ -204,6 +205,7 @@ def load(name):
         sources=sources, headers=[f"{folder}/{name}_variables.h"], core_sources=core_sources,
         core_headers=_included_core_headers(core_sources + sources),
         core_tests=getattr(d, "CORE_TESTS", []),
+        cross_check_outputs=d.CROSS_CHECK_OUTPUTS,
         capabilities=d.CAPABILITIES, enumerations=enumerations, arrays=d.VARIABLES,
         scalars=scalars)
 

@@ -18,7 +18,8 @@ import zipfile
 import numpy as np
 from fmpy import read_model_description
 
-from codegen.project import VERSION
+from codegen.models import load
+from codegen.project import MODELS, VERSION
 from examples.cross_check import START, STEP, STOP, reference_inputs, simulate, write_csv
 from examples.cross_check3 import simulate3, write_csv3
 from scripts.cross_check_platforms import HOST, RUNNERS, origin, run_binary
@@ -26,17 +27,9 @@ from scripts.cross_check_readme import TOOL_ID, readme
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
-# The reference variables (the rules recommend at most 10), FMI 2 names; in FMI 3 the arrays that
-# hold these elements. Together they determine the main outputs: omega and alpha in the fixed
-# frame are R(q) times the body ones; alpha_fixed/alpha_body of EulerRates are its inputs' alpha.
-REFERENCE_OUTPUTS = {
-    "AngularKinematics": [f"{n}[{i}]" for n in ("omega_body", "alpha_body") for i in (1, 2, 3)]
-    + [f"q[{i}]" for i in (1, 2, 3, 4)],
-    "EulerRates": [f"{n}[{i}]" for n in ("theta_dot", "theta_ddot") for i in (1, 2, 3)]
-    + ["singularity_distance"],
-    "AttitudePropagator": [f"q[{i}]" for i in (1, 2, 3, 4)]
-    + [f"{n}[{i}]" for n in ("theta", "theta_dot") for i in (1, 2, 3)],
-}
+# The reference variables of each model (the rules recommend at most 10), FMI 2 names; in FMI 3
+# the arrays that hold these elements: CROSS_CHECK_OUTPUTS of its description.
+REFERENCE_OUTPUTS = {name: load(name).cross_check_outputs for name in MODELS}
 
 
 def platforms(fmu):

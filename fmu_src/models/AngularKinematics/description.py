@@ -47,6 +47,11 @@ def _others_and_rates(i, j):
     return _others(j) + [f"theta_dot[{k}]" for k in (1, 2, 3) if k != j]
 
 
+# The outputs of the cross-check results (scripts/make_cross_check.py; the rules recommend at most
+# 10): omega and alpha in the fixed frame are R(q) times the body ones.
+CROSS_CHECK_OUTPUTS = ([f"{n}[{i}]" for n in ("omega_body", "alpha_body") for i in (1, 2, 3)] +
+                       [f"q[{i}]" for i in (1, 2, 3, 4)])
+
 VARIABLES = [
     dict(name="theta", vr=0, shape=(3,), causality="input", type="Angle",
          description="angle {i} of the rotation sequence (parameter sequence)"),

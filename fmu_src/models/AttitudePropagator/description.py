@@ -36,6 +36,10 @@ def _other_q(k):
     return [f"q[{m}]" for m in (1, 2, 3, 4) if m != k] + ["omega"]
 
 
+# The outputs of the cross-check results (scripts/make_cross_check.py; at most 10).
+CROSS_CHECK_OUTPUTS = ([f"q[{i}]" for i in (1, 2, 3, 4)] +
+                       [f"{n}[{i}]" for n in ("theta", "theta_dot") for i in (1, 2, 3)])
+
 VARIABLES = [
     dict(name="omega", vr=0, shape=(3,), causality="input", type="AngularVelocity",
          description="component {i} of the angular velocity of the body, in the frame of "

@@ -28,6 +28,11 @@ ENUMERATIONS = {
                          ("body", "components along the body axes b1, b2, b3")]),
 }
 
+# The outputs of the cross-check results (scripts/make_cross_check.py; at most 10): alpha_fixed
+# and alpha_body are the inputs' alpha.
+CROSS_CHECK_OUTPUTS = ([f"{n}[{i}]" for n in ("theta_dot", "theta_ddot") for i in (1, 2, 3)] +
+                       ["singularity_distance"])
+
 VARIABLES = [
     dict(name="theta", vr=0, shape=(3,), causality="input", type="Angle",
          description="angle {i} of the rotation sequence (parameter sequence)"),

@@ -51,6 +51,10 @@ def _vector(name, vr, causality, type, description, **more):
                 description=description, **more)
 
 
+# The outputs of the cross-check results (scripts/make_cross_check.py; at most 10): the parts of
+# a_P follow from these and the inputs.
+CROSS_CHECK_OUTPUTS = [f"{n}[{i}]" for n in ("v_P", "a_P", "specific_force") for i in (1, 2, 3)]
+
 VARIABLES = [
     _vector("omega", 0, "input", "AngularVelocity",
             "component {i} of the angular velocity of the body (body components)"),
