@@ -11,7 +11,9 @@ enum { MESSAGE_CAPACITY = 1024 };
 
 void ak_log(const ak_instance *instance, ak_log_category category, ak_status status,
             const char *format, ...) {
-    if (!ak_log_on(instance, category)) {
+    const bool always = status == AK_STATUS_ERROR && instance->layer->errors_always_logged &&
+                        instance->has_logger;
+    if (!always && !ak_log_on(instance, category)) {
         return;
     }
     char message[MESSAGE_CAPACITY];
