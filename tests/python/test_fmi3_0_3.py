@@ -9,7 +9,7 @@ import ctypes
 import numpy as np
 import pytest
 
-from fmi3_support import ERROR, MODELS, OK, Instance3, doubles, unzipped, vrs
+from fmi3_support import DISCARD, ERROR, MODELS, OK, Instance3, doubles, unzipped, vrs
 
 LOG_MESSAGE = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_int, ctypes.c_char_p,
                                ctypes.c_char_p)
@@ -69,6 +69,20 @@ def test_error_reaches_log_message_whatever_the_logging_settings(model, setting,
         level, category, message = instance.messages[0]
         assert (level, category) == ("Error", "logStatusError")
         assert message.startswith("fmi3SetFloat64: ") and str(UNKNOWN_VR) in message
+    finally:
+        instance.free()
+
+
+@pytest.mark.parametrize("logging_on", [False, True])
+def test_discard_logged_only_with_logging_on(logging_on):
+    """Not an error: with loggingOn false the FMU "must not call logMessage"."""
+    instance = Instance3("EulerRates", logging_on=logging_on)
+    try:
+        instance.initialize(inputs={"theta": [0.1, np.pi / 2, 0.3], "omega": [1.0, 0.5, -0.5]})
+        assert instance.do_step(0.0, 0.1) == (DISCARD, 0.0)
+        discards = [m for s, c, m in instance.messages if s == "Discard"]
+        assert any("is discarded" in m for m in discards) == logging_on
+        assert len(instance.messages) == 0 or logging_on
     finally:
         instance.free()
 
