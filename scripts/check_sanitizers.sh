@@ -101,6 +101,7 @@ for model in $models; do
   run tsan "build-tsan/test_fmi2_instances_$model" 1000 4 "$steps"
   run tsan "build-tsan/test_fmi2_instances_$model" 64 8 "$steps"
   run tsan "build-tsan/fmi3_abuse_$model" instances 1000 4 "$steps"
+  run tsan "build-tsan/fmi3_abuse_$model" parallel "$steps"
 done
 
 echo "=== valgrind memcheck (the normal build, build/)"

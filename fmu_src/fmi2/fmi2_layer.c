@@ -61,6 +61,8 @@ const ak_layer FMI2_LAYER = {
                             AK_CONTINUOUS_TIME_MODE,
                         AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_TERMINATED | AK_STEP_MODE |
                             AK_STEP_FAILED | AK_STEP_CANCELED},
+    /* FMI 2.0.4: "logger should only be called for log categories that were enabled". */
+    .errors_always_logged = false,
     .send = send,
     .allocate = allocate,
     .release = release,

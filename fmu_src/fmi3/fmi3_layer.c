@@ -53,6 +53,7 @@ const ak_layer FMI3_LAYER = {
     .refuse_real = ak3_refuse_real,
     .name_of = ak3_name_of,
     .count_matches = ak3_count_matches,
+    .errors_always_logged = true,
     .send = send,
     .allocate = allocate,
     .release = release,

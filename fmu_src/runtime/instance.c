@@ -11,7 +11,9 @@ enum { MESSAGE_CAPACITY = 1024 };
 
 void ak_log(const ak_instance *instance, ak_log_category category, ak_status status,
             const char *format, ...) {
-    if (!ak_log_on(instance, category)) {
+    const bool always = status == AK_STATUS_ERROR && instance->layer->errors_always_logged &&
+                        instance->has_logger;
+    if (!always && !ak_log_on(instance, category)) {
         return;
     }
     char message[MESSAGE_CAPACITY];
@@ -102,13 +104,17 @@ static ak_real_role real_role(const ak_variable *variable) {
     }
 }
 
-/* The log categories of a new or reset instance: errors and warnings are reported unless
- * switched off; the call trace only when logging was asked for at instantiation. */
+/* The log categories of a new or reset instance: every one when logging was asked for at
+ * instantiation. Without it, FMI 2 still reports errors and warnings unless switched off; FMI 3
+ * nothing but errors, which its layer always logs (3.0.3: "If loggingOn is false [...] the FMU
+ * must not call logMessage, except for fmi3Error and fmi3Fatal"). */
 static void reset_log_categories(ak_instance *instance) {
+    const bool quiet_by_default = instance->layer->errors_always_logged;
     for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
         instance->log_enabled[category] =
             instance->has_logger &&
-            (category != AK_LOG_CALLS || instance->logging_on_at_instantiation);
+            (instance->logging_on_at_instantiation ||
+             (category != AK_LOG_CALLS && !quiet_by_default));
     }
 }
 

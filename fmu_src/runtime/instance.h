@@ -86,6 +86,10 @@ typedef struct {
      * NULL when the count is that of the value references (FMI 2). */
     bool (*count_matches)(const ak_instance *instance, const char *function, const char *count_name,
                           size_t n, size_t total, const unsigned int vr[], size_t n_vr);
+    /* True when an error reaches the importer's logger whatever loggingOn and the categories
+     * say (FMI 3.0.3, 2_2: "error logging is always enabled unless the logMessage callback
+     * function pointer is NULL"); FMI 2.0.4 asks only for the enabled categories. */
+    bool errors_always_logged;
     /* Sends a fully formatted message through the importer's logger (there is one). */
     void (*send)(const ak_instance *instance, ak_log_category category, ak_status status,
                  const char *message);
@@ -160,7 +164,8 @@ static inline bool ak_log_on(const ak_instance *instance, ak_log_category catego
     return instance->log_enabled[category];
 }
 
-/* Formats a message and sends it through the layer, if the category is on. */
+/* Formats a message and sends it through the layer, if the category is on or it is an error
+ * the layer always logs. */
 void ak_log(const ak_instance *instance, ak_log_category category, ak_status status,
             const char *format, ...) AK_PRINTF_FORMAT(4, 5);
 

@@ -7,10 +7,14 @@
  *   fmi3_abuse instances N T STEPS N instances over T threads, each stepping with its own
  *                                  sequence and inputs, FMU states got, serialized, restored; each
  *                                  one's output bits equal a lone rerun's
+ *   fmi3_abuse parallel STEPS      two instances on two threads, started together (they meet
+ *                                  before their first step): each one's output bits equal a
+ *                                  lone rerun's
  *   fmi3_abuse soak STEPS          one instance, inputs changing every step: every call fmi3OK
  *                                  (or a warning/discard the model explains), no error logged
  *
  * Exit status 0 on success; every failure is printed. */
+#define _POSIX_C_SOURCE 200809L /* pthread_barrier_t */
 #include <math.h>
 #include <pthread.h>
 #include <stdint.h>
@@ -89,12 +93,23 @@ static int64_t sequence_of(unsigned int instance) {
     return (int64_t)(instance % 24) + 1;
 }
 
+/* The parallel mode's barrier, where its two threads meet before their first step (so that their
+ * steps overlap from the start); NULL otherwise. */
+static pthread_barrier_t *lockstep = NULL;
+
+static void meet(void) {
+    if (lockstep != NULL) {
+        pthread_barrier_wait(lockstep);
+    }
+}
+
 /* Runs an instance through its steps; returns a digest of every output bit. */
 static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_states) {
     log_counts counts = {0, 0};
     fmi3Instance instance = new_instance(&counts);
     ak_check(instance != NULL, "instantiate %u", id);
     if (instance == NULL) {
+        meet(); /* the other thread waits there */
         return 0;
     }
     const int64_t sequence = sequence_of(id);
@@ -117,6 +132,7 @@ static uint64_t run_instance(unsigned int id, unsigned int steps, bool with_stat
     const size_t n_arrays = output_arrays(arrays, &n_outputs);
     uint64_t digest = 1469598103934665603ULL;
     double t = 0.0;
+    meet();
     fmi3FMUState state = NULL;
     for (unsigned int step = 0; step < steps; step++) {
         double u[AK_MAX_INPUTS], y[AK_MAX_VARIABLES];
@@ -200,6 +216,32 @@ static void instances(unsigned int n, unsigned int threads, unsigned int steps) 
     free(digests);
     free(ids);
     free(works);
+}
+
+/* Two instances called in parallel from two threads (FMI 3.0.3, 2_2_common_mechanisms.adoc:
+ * "functions of different instances can be called in parallel from different threads within the
+ * same process"): the same bits as each alone. */
+static void parallel(unsigned int steps) {
+    pthread_barrier_t barrier;
+    uint64_t digests[2] = {0, 0};
+    work works[2] = {{0, 1, steps, digests}, {1, 1, steps, digests}};
+    pthread_t ids[2];
+    ak_check(pthread_barrier_init(&barrier, NULL, 2) == 0, "barrier");
+    lockstep = &barrier;
+    for (int k = 0; k < 2; k++) {
+        ak_check(pthread_create(&ids[k], NULL, run_work, &works[k]) == 0, "thread");
+    }
+    for (int k = 0; k < 2; k++) {
+        pthread_join(ids[k], NULL);
+    }
+    lockstep = NULL;
+    pthread_barrier_destroy(&barrier);
+    for (unsigned int i = 0; i < 2; i++) {
+        ak_check(digests[i] == run_instance(i, steps, false),
+                 "instance %u differs from its lone rerun", i);
+    }
+    printf("fmi3_abuse parallel (%s): 2 instances x %u steps on 2 threads at once, each "
+           "bit-identical to a lone rerun\n", AK_MODEL.model_identifier, steps);
 }
 
 /* Every function with a NULL instance: fmi3Error (or nothing), no crash. */
@@ -302,10 +344,12 @@ int main(int argc, char **argv) {
     } else if (strcmp(mode, "instances") == 0 && argc == 5) {
         instances((unsigned int)atoi(argv[2]), (unsigned int)atoi(argv[3]),
                   (unsigned int)atoi(argv[4]));
+    } else if (strcmp(mode, "parallel") == 0 && argc == 3) {
+        parallel((unsigned int)atoi(argv[2]));
     } else if (strcmp(mode, "soak") == 0 && argc == 3) {
         soak(strtoul(argv[2], NULL, 10));
     } else {
-        fprintf(stderr, "usage: fmi3_abuse calls | instances N THREADS STEPS | soak STEPS\n");
+        fprintf(stderr, "usage: fmi3_abuse calls | instances N THREADS STEPS | parallel STEPS | soak STEPS\n");
         return 2;
     }
     return ak_check_exit_status();

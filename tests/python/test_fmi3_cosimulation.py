@@ -35,7 +35,7 @@ def test_variable_communication_steps():
 
 
 def test_euler_rates_discards_a_step_at_the_singularity_and_recovers():
-    instance = Instance3("EulerRates")
+    instance = Instance3("EulerRates", logging_on=True)  # a discard is logged only then
     try:
         instance.initialize(inputs={"theta": [0.1, 0.2, 0.3], "omega": [1.0, 0.5, -0.5]})
         assert instance.do_step(0.0, 0.1) == (OK, 0.1)
