@@ -19,7 +19,7 @@
 #include "driver_rows.h"
 #include "fmi3_driver_api.h"
 
-enum { MAX_VALUES = 128, MAX_INPUTS = 16, MAX_STATES = 16, MAX_ROWS = 4096 };
+enum { MAX_VALUES = 128, MAX_INPUTS = 32, MAX_STATES = 16, MAX_ROWS = 4096 };
 
 static int failed(fmi3Status status, const char *call) {
     if (status > fmi3Warning) {

@@ -91,7 +91,7 @@ def sympy_cases(n):
 
 @pytest.fixture(params=[2, 3], ids=["fmi2", "fmi3"])
 def instance(request, new_instance):
-    i = new_instance(MODEL, fmi_version=request.param)
+    i = new_instance(MODEL, fmi_version=request.param, logging_on=True)  # FMI 3: warnings too
     i.initialize()
     return i
 
