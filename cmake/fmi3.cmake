@@ -2,7 +2,7 @@
 # the same kinematics core and model folder as the FMI 2 one, with the FMI 3 layer fmu_src/fmi3/
 # instead of fmu_src/fmi2/; staged in build*/fmu3/binaries/<FMI 3 platform>/ and packaged, by the
 # build that packages (preset release), as dist/fmi3/<Model>.fmu with the binaries of the other
-# builds (AK_EXTRA_FMI3_BINARIES: windows and aarch64 presets).
+# builds (AK_EXTRA_FMI3_BINARIES: windows, aarch64, riscv64 and darwin presets).
 set(AK_EXTRA_FMI3_BINARIES "" CACHE STRING
     "FMI 3 binaries of other builds to add to dist/fmi3/*.fmu, each as .../<platform>/<Model>.<ext>")
 
@@ -11,6 +11,8 @@ if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
   set(_arch x86_64)
 elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64|ARM64)$")
   set(_arch aarch64)
+elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^riscv64$")
+  set(_arch riscv64)
 else()
   set(_arch ${CMAKE_SYSTEM_PROCESSOR})
 endif()
@@ -120,9 +122,9 @@ list(TRANSFORM AK_MODELS APPEND _fmi3 OUTPUT_VARIABLE _fmi3_targets)
 add_custom_target(fmi3_binaries DEPENDS ${_fmi3_targets})
 
 # Our FMI 3 master: runs a fixed scenario through one FMI 3 binary and prints every output in
-# hex, so that the binaries of x86_64-linux, aarch64-linux (under qemu) and x86_64-windows (under
-# wine) can be compared bit for bit (tests/python/test_platforms.py); its cross-check mode
-# computes dist/cross-check/'s results with each platform's binary.
+# hex, so that the binaries of x86_64-linux, aarch64-linux and riscv64-linux (under qemu) and
+# x86_64-windows (under wine) can be compared bit for bit (tests/python/test_fmi3_platforms.py);
+# its cross-check mode computes dist/cross-check/'s results with each platform's binary.
 add_executable(fmi3_driver tools/fmi3_driver.c tools/fmi3_driver_cross_check.c tools/driver_rows.c
                            tools/fmi3_driver_models.c) # models: generated
 target_include_directories(fmi3_driver PRIVATE "${FMI2_HEADERS_DIR}" ${CMAKE_SOURCE_DIR}/tools)

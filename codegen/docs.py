@@ -214,8 +214,8 @@ def dist_readme():
     fmi2 = [f"- `{model}.fmu`: FMI 2.0, Co-Simulation and Model Exchange, binaries linux64, win64, "
             "win32 and darwin64 (universal: x86_64 and arm64), C sources" for model in MODELS]
     fmi3 = [f"- `fmi3/{model}.fmu`: FMI 3.0, Co-Simulation and Model Exchange, binaries "
-            "x86_64-linux, aarch64-linux, x86_64-windows, x86-windows, x86_64-darwin and "
-            "aarch64-darwin, C sources" for model in MODELS]
+            "x86_64-linux, aarch64-linux, riscv64-linux, x86_64-windows, x86-windows, "
+            "x86_64-darwin and aarch64-darwin, C sources" for model in MODELS]
     return "\n".join([
         "# dist/: what the build writes", "",
         "Build output only; this file is the only one committed, written by `python -m codegen`",

@@ -4,7 +4,7 @@ Writes results/tumbling_body.csv with the nine inputs and the four output vector
 communication point, results/tumbling_body.png with omega and alpha in both frames, and prints a
 short summary. Runs that take more than a moment show a progress bar. `bash scripts/demo.sh` runs
 it on an FMU it builds first, build-demo/dist/AngularKinematics.fmu (x86_64-linux binary only);
-the default is the six-platform FMU of `bash scripts/build.sh`."""
+the default is the seven-platform FMU of `bash scripts/build.sh`."""
 import argparse
 import pathlib
 import sys

@@ -6,6 +6,8 @@
 #   preset windows32       x86-windows DLLs (mingw-w64 i686, SSE2), build-win32/
 #   preset aarch64         aarch64-linux FMI 3 binaries (and FMI 2 ones, for the tests only:
 #                          FMI 2 names no aarch64-linux platform), build-aarch64/
+#   preset riscv64         riscv64-linux FMI 3 binaries (and FMI 2 ones, for the tests only,
+#                          as aarch64's), build-riscv64/
 #   presets darwin-x86_64, darwin-aarch64   the macOS dylibs (zig), build-darwin-*/, of which the
 #                          FMI 2 ones are combined into one universal dylib per model
 #                          (cmake/fat_macho.py) for binaries/darwin64, in build-darwin64/
@@ -18,8 +20,10 @@ bash scripts/configure.sh windows
 cmake --build build-win64 --parallel 2
 bash scripts/configure.sh windows32
 cmake --build build-win32 --parallel 2 --target fmi2_binaries fmi3_binaries fmu_driver fmi3_driver
-bash scripts/configure.sh aarch64
-cmake --build build-aarch64 --parallel 2 --target fmi2_binaries fmi3_binaries fmu_driver fmi3_driver
+for arch in aarch64 riscv64; do
+  bash scripts/configure.sh "$arch"
+  cmake --build "build-$arch" --parallel 2 --target fmi2_binaries fmi3_binaries fmu_driver fmi3_driver
+done
 for arch in x86_64 aarch64; do
   bash scripts/configure.sh "darwin-$arch"
   cmake --build "build-darwin-$arch" --parallel 2 --target fmi2_binaries fmi3_binaries
@@ -38,6 +42,7 @@ for model in $models; do
   for binary in build-win64/fmu3/binaries/x86_64-windows/$model.dll \
                 build-win32/fmu3/binaries/x86-windows/$model.dll \
                 build-aarch64/fmu3/binaries/aarch64-linux/$model.so \
+                build-riscv64/fmu3/binaries/riscv64-linux/$model.so \
                 build-darwin-x86_64/fmu3/binaries/x86_64-darwin/$model.dylib \
                 build-darwin-aarch64/fmu3/binaries/aarch64-darwin/$model.dylib; do
     fmi3_binaries+="${fmi3_binaries:+;}$PWD/$binary"

@@ -66,6 +66,7 @@ RUNNERS = {
     "linux64": Runner("build"),
     "x86_64-linux": Runner("build"),
     "aarch64-linux": Runner("build-aarch64", **qemu("aarch64")),
+    "riscv64-linux": Runner("build-riscv64", **qemu("riscv64")),
     "win64": Runner("build-win64", **WINE64),
     "x86_64-windows": Runner("build-win64", **WINE64),
     "win32": Runner("build-win32", **WINE32),

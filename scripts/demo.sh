@@ -3,7 +3,7 @@
 # results/tumbling_body.csv and the plot results/tumbling_body.png. It sets up and builds only what
 # that needs: the native C toolchain, CMake and the pinned packages of requirements-demo.txt
 # (scripts/setup.sh --demo), then the FMI 2.0 build-demo/dist/AngularKinematics.fmu with the
-# x86_64-linux binary only (CMake preset demo). The FMUs for six platforms, in dist/, are
+# x86_64-linux binary only (CMake preset demo). The FMUs for seven platforms, in dist/, are
 # `bash scripts/build.sh`'s; this one stays out of dist/, whose FMUs the tests check.
 #   bash scripts/demo.sh [demo/tumbling_body.py's options, e.g. --stop-time 5]
 set -euo pipefail
@@ -17,9 +17,9 @@ cat >build-demo/dist/README.md <<'EOF'
 # build-demo/dist/: the demo's FMU
 
 `AngularKinematics.fmu`, written by `bash scripts/demo.sh`: FMI 2.0, Co-Simulation and Model
-Exchange, the x86_64-linux binary only (`binaries/linux64`), C sources. The FMUs for six platforms
+Exchange, the x86_64-linux binary only (`binaries/linux64`), C sources. The FMUs for seven platforms
 are written to `dist/` by `bash scripts/build.sh`.
 EOF
 echo "demo: built $fmu (FMI 2.0, x86_64-linux binary only;" \
-     "bash scripts/build.sh builds the six-platform FMUs in dist/)"
+     "bash scripts/build.sh builds the seven-platform FMUs in dist/)"
 .venv/bin/python -m demo.tumbling_body --fmu "$fmu" "$@"

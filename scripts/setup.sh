@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Prepares a machine for building and testing: C toolchain, CMake, mingw-w64 for the Windows
-# binaries (x86_64 and i686), gcc-aarch64-linux-gnu and qemu-user for the aarch64-linux FMI 3
-# binary (from Debian's packages if missing; with --with-wine also wine, to test the Windows
-# binary), and a Python virtual environment .venv with the pinned packages of requirements.txt,
-# among them zig (ziglang) for the macOS binaries and the proof builds (docs/platforms.md), and the
-# project's own packages (pyproject.toml) installed editable.
+# binaries (x86_64 and i686), gcc-aarch64-linux-gnu, gcc-riscv64-linux-gnu and qemu-user for the
+# aarch64-linux and riscv64-linux FMI 3 binaries (from Debian's packages if missing; with
+# --with-wine also wine, to test the Windows binary), and a Python virtual environment .venv with
+# the pinned packages of requirements.txt, among them zig (ziglang) for the macOS binaries and the
+# proof builds (docs/platforms.md), and the project's own packages (pyproject.toml) installed
+# editable.
 #   bash scripts/setup.sh [--with-wine]
 #   bash scripts/setup.sh --demo    only what scripts/demo.sh needs: the native C toolchain, CMake
 #                                   and make, and in .venv the pinned packages of
@@ -38,7 +39,7 @@ command -v cmake >/dev/null 2>&1 || missing+=(cmake)
 command -v make >/dev/null 2>&1 || missing+=(make)
 command -v cc >/dev/null 2>&1 || missing+=(gcc libc6-dev)
 command -v python3 >/dev/null 2>&1 || missing+=(python3)
-if [ -z "$demo" ]; then # the cross compilers and ccache: the six-platform build and the tests
+if [ -z "$demo" ]; then # the cross compilers and ccache: the seven-platform build and the tests
   # The Windows binary is cross-compiled with mingw-w64; the tests run it under wine (--with-wine).
   command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 || missing+=(gcc-mingw-w64-x86-64-win32)
   # The 32-bit Windows binary: mingw-w64 for i686 (the macOS ones: zig, from requirements.txt).
@@ -46,7 +47,11 @@ if [ -z "$demo" ]; then # the cross compilers and ccache: the six-platform build
   # The aarch64-linux FMI 3 binaries are cross-compiled with Debian's gcc and run under qemu-user.
   command -v aarch64-linux-gnu-gcc >/dev/null 2>&1 || missing+=(gcc-aarch64-linux-gnu)
   [ -f /usr/aarch64-linux-gnu/lib/libc.so.6 ] || missing+=(libc6-dev-arm64-cross)
-  command -v qemu-aarch64 >/dev/null 2>&1 || missing+=(qemu-user)
+  # The riscv64-linux FMI 3 binaries likewise (Scrt1.o: the C library's development files, which
+  # gcc-riscv64-linux-gnu does not pull in).
+  command -v riscv64-linux-gnu-gcc >/dev/null 2>&1 || missing+=(gcc-riscv64-linux-gnu)
+  [ -f /usr/riscv64-linux-gnu/lib/Scrt1.o ] || missing+=(libc6-dev-riscv64-cross)
+  { command -v qemu-aarch64 && command -v qemu-riscv64; } >/dev/null 2>&1 || missing+=(qemu-user)
   # ccache: the build folders compile the same sources; a second run recompiles nothing unchanged.
   command -v ccache >/dev/null 2>&1 || missing+=(ccache)
   if [ "${1:-}" = "--with-wine" ]; then

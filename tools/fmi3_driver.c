@@ -1,12 +1,12 @@
 /* A minimal FMI 3.0 co-simulation importer of our own, to prove the binaries of other platforms:
- * built natively, for aarch64 (run under qemu-aarch64) and with mingw-w64 (run under wine), it
- * loads one FMI 3 binary of AngularKinematics, EulerRates or AttitudePropagator, drives it
- * through every rotation sequence (and both frames of EulerRates and AttitudePropagator) with
- * fixed inputs, and prints every output, and for AngularKinematics and AttitudePropagator the
- * directional and adjoint derivatives (AngularKinematics also the output derivatives), as the
- * hex of their IEEE 754 bits, with the status of each call. AttitudePropagator's outputs come
- * from its states, integrated by fmi3DoStep: the printout proves the integration too. Two
- * platforms agree when their printouts are identical.
+ * built natively, for aarch64 and riscv64 (run under qemu-aarch64, qemu-riscv64) and with
+ * mingw-w64 (run under wine), it loads one FMI 3 binary of AngularKinematics, EulerRates or
+ * AttitudePropagator, drives it through every rotation sequence (and both frames of EulerRates
+ * and AttitudePropagator) with fixed inputs, and prints every output, and for AngularKinematics
+ * and AttitudePropagator the directional and adjoint derivatives (AngularKinematics also the
+ * output derivatives), as the hex of their IEEE 754 bits, with the status of each call.
+ * AttitudePropagator's outputs come from its states, integrated by fmi3DoStep: the printout
+ * proves the integration too. Two platforms agree when their printouts are identical.
  *
  * The inputs are exact binary fractions from an integer generator, so every platform feeds the
  * FMU the same bits and any difference comes from the binaries alone.

@@ -109,7 +109,7 @@ def test_demo_builds_only_the_fmu_it_simulates_outside_dist():
     assert target == f"fmu_{model}"
     assert next(p for p in presets if p["name"] == preset)["binaryDir"] == f"${{sourceDir}}/{folder}"
     assert variables["AK_DIST_DIR"] == f"${{sourceDir}}/{pathlib.Path(fmu).parent}"
-    assert not fmu.startswith("dist/")  # dist/ holds the six-platform FMUs the tests check
+    assert not fmu.startswith("dist/")  # dist/ holds the seven-platform FMUs the tests check
     commands = [line.strip() for line in (ROOT / "scripts" / "demo.sh").read_text().splitlines()
                 if line.strip() and not line.lstrip().startswith("#")]
     assert "bash scripts/setup.sh --demo" in commands

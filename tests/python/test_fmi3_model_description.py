@@ -124,7 +124,8 @@ def test_fmu_contents(model):
         names = set(z.namelist())
         html = z.read("documentation/index.html").decode()
         icon = z.read("terminalsAndIcons/icon.png")
-    for binary in ("x86_64-linux/%s.so", "x86_64-windows/%s.dll", "aarch64-linux/%s.so"):
+    for binary in ("x86_64-linux/%s.so", "x86_64-windows/%s.dll", "aarch64-linux/%s.so",
+                   "riscv64-linux/%s.so"):
         assert "binaries/" + binary % model in names
     assert "sources/buildDescription.xml" in names
     assert icon[:8] == b"\x89PNG\r\n\x1a\n"

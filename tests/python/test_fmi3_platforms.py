@@ -1,4 +1,4 @@
-"""The FMI 3 binaries of the six platforms in dist/fmi3/<Model>.fmu: each FMU holds all six, the
+"""The FMI 3 binaries of the seven platforms in dist/fmi3/<Model>.fmu: each FMU holds all seven, the
 Linux and Windows ones export every function of fmi3Functions.h (the darwin ones:
 tests/python/test_darwin_binaries.py), fmi3GetVersion says 3.0. That they compute the same bits,
 run under qemu and wine, is tests/python/test_platforms.py's."""
@@ -19,12 +19,12 @@ def binary(model, platform):
     return path
 
 
-PLATFORMS = ["x86_64-linux", "aarch64-linux", "x86_64-windows", "x86-windows", "x86_64-darwin",
-             "aarch64-darwin"]
+PLATFORMS = ["x86_64-linux", "aarch64-linux", "riscv64-linux", "x86_64-windows", "x86-windows",
+             "x86_64-darwin", "aarch64-darwin"]
 
 
 @pytest.mark.parametrize("model", MODELS)
-def test_fmu_holds_the_six_platforms(model):
+def test_fmu_holds_the_seven_platforms(model):
     folders = sorted(p.name for p in (pathlib.Path(unzipped(model)[0]) / "binaries").iterdir())
     assert folders == sorted(PLATFORMS)
     for platform in PLATFORMS:
@@ -39,8 +39,8 @@ def header_functions():
     return set(regex.findall(r"#define (fmi3\w+)\s+fmi3FullName\(", header))
 
 
-@pytest.mark.parametrize("platform", ["x86_64-linux", "aarch64-linux", "x86_64-windows",
-                                      "x86-windows"])
+@pytest.mark.parametrize("platform", ["x86_64-linux", "aarch64-linux", "riscv64-linux",
+                                      "x86_64-windows", "x86-windows"])
 @pytest.mark.parametrize("model", MODELS)
 def test_every_function_of_the_header_is_exported(model, platform):
     expected = header_functions()

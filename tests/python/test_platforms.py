@@ -8,6 +8,7 @@ outputs come from its integrated states: the integration is compared too.
     x86_64-linux (zig)    the darwin builds' compiler, for x86_64-linux (preset zig-linux):
                           proves zig compiles our sources to the same arithmetic as gcc
     aarch64-linux         under qemu-aarch64 (preset aarch64)
+    riscv64-linux         under qemu-riscv64 (preset riscv64)
     x86_64-windows        under wine (preset windows)
     x86 (linux-musl)      the 32-bit x86 proof build (preset x86-musl): the FMU's sources with
                           the x86-windows flags, statically linked into the driver, run natively
@@ -103,13 +104,23 @@ def zig_linux(model, fmi):
     return run([driver("build-zig-linux", fmi)] + driver_arguments(fmi, model, library))
 
 
-def aarch64_linux(model, fmi):
-    qemu = shutil.which("qemu-aarch64") or pytest.fail("qemu-aarch64 missing: bash scripts/setup.sh")
-    # FMI 2 has no aarch64-linux platform: its binary is the test build's, not the FMU's.
-    library = (built(ROOT / "build-aarch64" / "fmu" / "binaries" / "linux64" / f"{model}.so")
-               if fmi == 2 else fmu_binary(model, fmi, "aarch64-linux"))
-    return run([qemu, "-L", "/usr/aarch64-linux-gnu", driver("build-aarch64", fmi)]
+def under_qemu(arch, model, fmi):
+    """The driver of build-<arch> under qemu-<arch>, with the C library of Debian's cross
+    compiler for <arch>."""
+    qemu = shutil.which(f"qemu-{arch}") or pytest.fail(f"qemu-{arch} missing: bash scripts/setup.sh")
+    # FMI 2 has no <arch>-linux platform: its binary is the test build's, not the FMU's.
+    library = (built(ROOT / f"build-{arch}" / "fmu" / "binaries" / "linux64" / f"{model}.so")
+               if fmi == 2 else fmu_binary(model, fmi, f"{arch}-linux"))
+    return run([qemu, "-L", f"/usr/{arch}-linux-gnu", driver(f"build-{arch}", fmi)]
                + driver_arguments(fmi, model, library))
+
+
+def aarch64_linux(model, fmi):
+    return under_qemu("aarch64", model, fmi)
+
+
+def riscv64_linux(model, fmi):
+    return under_qemu("riscv64", model, fmi)
 
 
 def x86_64_windows(model, fmi):
@@ -133,8 +144,8 @@ def x86_windows(model, fmi):
 
 
 PLATFORMS = {"x86_64-linux-zig": zig_linux, "aarch64-linux": aarch64_linux,
-             "x86_64-windows": x86_64_windows, "x86-linux-musl": x86_linux_musl,
-             "x86-windows": x86_windows}
+             "riscv64-linux": riscv64_linux, "x86_64-windows": x86_64_windows,
+             "x86-linux-musl": x86_linux_musl, "x86-windows": x86_windows}
 
 
 @functools.lru_cache(maxsize=None)

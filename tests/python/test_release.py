@@ -26,7 +26,8 @@ KINDS = {"fmi2": ("fmu_package_{}", "{}.fmu",
                   ["linux64/{}.so", "win64/{}.dll", "win32/{}.dll", "darwin64/{}.dylib"]),
          "fmi3": ("fmu3_package_{}", "fmi3/{}.fmu",
                   ["x86_64-linux/{}.so", "x86_64-windows/{}.dll", "aarch64-linux/{}.so",
-                   "x86-windows/{}.dll", "x86_64-darwin/{}.dylib", "aarch64-darwin/{}.dylib"])}
+                   "riscv64-linux/{}.so", "x86-windows/{}.dll", "x86_64-darwin/{}.dylib",
+                   "aarch64-darwin/{}.dylib"])}
 EPOCH = 1700000001  # 2023-11-14 22:13:21 UTC: zip keeps even seconds
 
 
