@@ -12,26 +12,36 @@ static void load(const double *from, double to[3]) {
     to[0] = from[0], to[1] = from[1], to[2] = from[2];
 }
 
-void ak_point_kinematics(const ak_point_inputs *in, ak_point_outputs *out) {
-    /* The inputs copied first: out may not alias them, but the compiler cannot know, and would
-     * read them again after every store. */
-    double omega[3], alpha[3], r[3], r_dot[3];
-    load(in->omega, omega), load(in->alpha, alpha), load(in->r, r), load(in->r_dot, r_dot);
+bool ak_point_kinematics(const ak_point_inputs *in, ak_point_outputs *out) {
+    /* The inputs copied first: out may alias them (a model's value array holds both), and the
+     * compiler would otherwise read them again after every store. */
+    double omega[3], alpha[3], v_O[3], a_O[3], r[3], r_dot[3], r_ddot[3], g[3];
+    load(in->omega, omega), load(in->alpha, alpha), load(in->v_O, v_O), load(in->a_O, a_O);
+    load(in->r, r), load(in->r_dot, r_dot), load(in->r_ddot, r_ddot), load(in->g, g);
     double omega_x_r[3], omega_x_r_dot[3], tangential[3], centripetal[3];
     cross(omega, r, omega_x_r);
     cross(omega, r_dot, omega_x_r_dot);
     cross(alpha, r, tangential);
     cross(omega, omega_x_r, centripetal);
-    ak_point_outputs o;
+    /* x - x is 0 for a finite x and NaN otherwise: one sum tells whether all 18 are finite, from
+     * the values as they are computed (reading them back from out would cost more). */
+    double zero = 0.0;
     for (int k = 0; k < 3; k++) {
-        o.a_tangential[k] = tangential[k];
-        o.a_centripetal[k] = centripetal[k];
-        o.a_coriolis[k] = 2.0 * omega_x_r_dot[k];
-        o.v_P[k] = in->v_O[k] + omega_x_r[k] + r_dot[k];
-        o.a_P[k] = in->a_O[k] + tangential[k] + centripetal[k] + o.a_coriolis[k] + in->r_ddot[k];
-        o.specific_force[k] = o.a_P[k] - in->g[k];
+        const double coriolis = 2.0 * omega_x_r_dot[k];
+        const double v_P = v_O[k] + omega_x_r[k] + r_dot[k];
+        const double a_P = a_O[k] + tangential[k] + centripetal[k] + coriolis + r_ddot[k];
+        const double specific_force = a_P - g[k];
+        zero += (v_P - v_P) + (a_P - a_P) + (specific_force - specific_force) +
+                (tangential[k] - tangential[k]) + (centripetal[k] - centripetal[k]) +
+                (coriolis - coriolis);
+        out->v_P[k] = v_P;
+        out->a_P[k] = a_P;
+        out->specific_force[k] = specific_force;
+        out->a_tangential[k] = tangential[k];
+        out->a_centripetal[k] = centripetal[k];
+        out->a_coriolis[k] = coriolis;
     }
-    *out = o;
+    return zero == 0.0;
 }
 
 /* d(a x b) = da x b + a x db */

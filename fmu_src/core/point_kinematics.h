@@ -26,6 +26,8 @@
 #ifndef AK_POINT_KINEMATICS_H
 #define AK_POINT_KINEMATICS_H
 
+#include <stdbool.h>
+
 typedef struct {
     const double *omega, *alpha; /* angular velocity and acceleration of B */
     const double *v_O, *a_O;     /* velocity and acceleration of O */
@@ -38,8 +40,10 @@ typedef struct {
     double a_tangential[3], a_centripetal[3], a_coriolis[3];
 } ak_point_outputs;
 
-/* The outputs above from the inputs (each a 3-vector in B components). */
-void ak_point_kinematics(const ak_point_inputs *in, ak_point_outputs *out);
+/* The outputs above from the inputs (each a 3-vector in B components); out may overlap the
+ * inputs. Returns whether every output is finite (finite inputs whose products overflow give
+ * infinities or NaN). */
+bool ak_point_kinematics(const ak_point_inputs *in, ak_point_outputs *out);
 
 /* The change of the outputs along a change d_in of the inputs (forward mode, exact: the outputs
  * are polynomials of the inputs); with d_in a unit vector, a column of the Jacobian. */

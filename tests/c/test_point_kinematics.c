@@ -120,7 +120,18 @@ static void tangent(void) {
     }
 }
 
+/* The returned flag: true for finite outputs, false when a product overflows (omega x r: 1e400). */
+static void overflow_flag(void) {
+    const double omega[3] = {1e200, 0.0, 0.0}, r[3] = {0.0, 1e200, 0.0}, small[3] = {1.0, 2.0, 3.0};
+    ak_point_outputs out;
+    const ak_point_inputs huge = {omega, ZERO, ZERO, ZERO, r, ZERO, ZERO, ZERO};
+    const ak_point_inputs fine = {small, small, small, small, small, small, small, small};
+    ak_check(!ak_point_kinematics(&huge, &out) && isinf(out.v_P[2]), "overflow: flag false");
+    ak_check(ak_point_kinematics(&fine, &out), "finite: flag true");
+}
+
 int main(void) {
+    overflow_flag();
     uniform_rotation();
     sliding_and_spin_up();
     random_inputs();

@@ -10,6 +10,7 @@
 #include "PointKinematics_variables.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "point_kinematics.h"
 
@@ -43,32 +44,23 @@ static double size_of(const double v[3]) {
 
 static ak_eval_status evaluate(ak_model_data *data) {
     double *v = data->values;
+    double kept[PK_N_OUTPUTS]; /* the last valid outputs, put back if the new ones overflow */
+    memcpy(kept, &v[PK_VR_V_P], sizeof kept);
     const ak_point_inputs in = inputs_of(v);
-    ak_point_outputs out;
-    ak_point_kinematics(&in, &out);
-    const double *computed = (const double *)&out;
-    /* One test of all 18 (x - x is 0 for a finite x, NaN for an infinite one), then the first
-     * one that overflowed, for the message. */
-    double zero = 0.0;
-    for (int k = 0; k < PK_N_OUTPUTS; k++) {
-        zero += computed[k] - computed[k];
+    if (ak_point_kinematics(&in, (ak_point_outputs *)&v[PK_VR_V_P])) {
+        return AK_EVAL_OK;
     }
-    for (int k = 0; zero != 0.0 && k < PK_N_OUTPUTS; k++) {
-        if (!isfinite(computed[k])) {
-            ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
-                         "%s: %s = %g: a product of the inputs overflows (|omega| = %g, "
-                         "|alpha| = %g, |r| = %g, |r_dot| = %g); the outputs keep their last "
-                         "valid values",
-                         AK_MODEL.model_identifier, PK_VARIABLES[PK_VR_V_P + k].name,
-                         computed[k], size_of(in.omega), size_of(in.alpha), size_of(in.r),
-                         size_of(in.r_dot));
-            return AK_EVAL_FAILED;
-        }
+    int k = 0;
+    while (isfinite(v[PK_VR_V_P + k])) {
+        k++;
     }
-    for (int k = 0; k < PK_N_OUTPUTS; k++) {
-        v[PK_VR_V_P + k] = computed[k];
-    }
-    return AK_EVAL_OK;
+    ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
+                 "%s: %s = %g: a product of the inputs overflows (|omega| = %g, |alpha| = %g, "
+                 "|r| = %g, |r_dot| = %g); the outputs keep their last valid values",
+                 AK_MODEL.model_identifier, PK_VARIABLES[PK_VR_V_P + k].name, v[PK_VR_V_P + k],
+                 size_of(in.omega), size_of(in.alpha), size_of(in.r), size_of(in.r_dot));
+    memcpy(&v[PK_VR_V_P], kept, sizeof kept);
+    return AK_EVAL_FAILED;
 }
 
 /* Column k of the Jacobian is the change of the outputs along input k (core's tangent). */
