@@ -198,17 +198,41 @@ def test_an_overflow_is_refused_and_the_next_valid_set_works(instance):
         assert np.array_equal(after[name], before[name]), name
 
 
+def sympy_outputs():
+    """The 24 input symbols and the outputs as sympy expressions of them (the issue's formulas)."""
+    x = sp.symbols(" ".join(f"x{k}" for k in range(24)))
+    omega, alpha, v_O, a_O, r, r_dot, r_ddot, g = (sp.Matrix(x[3 * k:3 * k + 3]) for k in range(8))
+    a_P = a_O + alpha.cross(r) + omega.cross(omega.cross(r)) + 2 * omega.cross(r_dot) + r_ddot
+    return x, {"v_P": v_O + omega.cross(r) + r_dot, "a_P": a_P, "specific_force": a_P - g,
+               "a_tangential": alpha.cross(r), "a_centripetal": omega.cross(omega.cross(r)),
+               "a_coriolis": 2 * omega.cross(r_dot)}
+
+
+def test_directional_derivatives_are_the_jacobian(new_instance, report):
+    """fmi2GetDirectionalDerivative along each input, every output, against sympy's Jacobian."""
+    instance = new_instance(MODEL)
+    instance.initialize()
+    u = np.random.default_rng(3).uniform(-2.0, 2.0, 24)
+    assert set_inputs(instance, u) == 0
+    x, formulas = sympy_outputs()
+    outputs_all = sp.Matrix([e for vector in VECTORS_OUT for e in formulas[vector]])
+    J = np.array(outputs_all.jacobian(x).subs(dict(zip(x, u))).evalf(30), dtype=float)
+    out_vrs = [instance.vr[n] for n in OUTPUT_NAMES]
+    worst = 0.0
+    for k in range(24):
+        column = np.array(instance.fmu.getDirectionalDerivative(out_vrs, [k], [1.0]))
+        worst = max(worst, float(np.max(np.abs(column - J[:, k]) / (1.0 + np.abs(J[:, k])))))
+    report(f"{MODEL}: 18 x 24 directional derivatives against sympy's Jacobian: largest error "
+           f"{worst:.2g}")
+    assert worst <= 1e-14
+
+
 def test_model_structure_lists_exactly_the_derivations_dependencies():
     md = read_model_description(str(fmu_path_of(MODEL)))
     by_vr = {v.valueReference: v.name for v in md.modelVariables}
     listed = {u.variable.name: {d.name for d in (u.dependencies or [])}
               for u in md.outputs}
-    x = sp.symbols(" ".join(f"x{k}" for k in range(24)))
-    omega, alpha, v_O, a_O, r, r_dot, r_ddot, g = (sp.Matrix(x[3 * k:3 * k + 3]) for k in range(8))
-    a_P = a_O + alpha.cross(r) + omega.cross(omega.cross(r)) + 2 * omega.cross(r_dot) + r_ddot
-    formulas = {"v_P": v_O + omega.cross(r) + r_dot, "a_P": a_P, "specific_force": a_P - g,
-                "a_tangential": alpha.cross(r), "a_centripetal": omega.cross(omega.cross(r)),
-                "a_coriolis": 2 * omega.cross(r_dot)}
+    x, formulas = sympy_outputs()
     for vector, formula in formulas.items():
         for i in range(3):
             expression = sp.expand(formula[i])
