@@ -1,6 +1,6 @@
 """fmu_src/core/attitude_sequences.h: the angles of each of the 24 sequences as its own function,
-chain_angles of fmu_src/core/attitude.c with the sequence's chain written in, and the table that
-finds a sequence's function from its contents. From codegen/project.py's SEQUENCES, like every
+chain_angles of fmu_src/core/attitude_angles.c with the sequence's chain written in, and the
+table that finds a sequence's function from its contents. From codegen/project.py's SEQUENCES, like every
 other table of the sequences: the core types none of them by hand."""
 from codegen import project
 from codegen.generate import HEADER_NOTE
@@ -17,9 +17,10 @@ def chain(name):
 
 def attitude_sequences_h():
     lines = ["/* The angles of each of the 24 rotation sequences as its own function: chain_angles",
-             " * (attitude.c) with the sequence's chain constant, so that its indices, signs and the",
-             " * order of theta fold away; and the table of them by the sequence's contents (a copy of",
-             " * an entry of AK_SEQUENCES finds its function too). Included by attitude.c.",
+             " * (attitude_angles.c) with the sequence's chain constant, so that its indices, signs",
+             " * and the order of theta fold away; and the table of them by the sequence's contents",
+             " * (a copy of an entry of AK_SEQUENCES finds its function too). Included by",
+             " * attitude_angles.c.",
              f" * {HEADER_NOTE.format(source='codegen/project.py (codegen/attitude_sequences.py)')} */",
              ""]
     c_bool = {True: "true", False: "false"}

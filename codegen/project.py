@@ -59,9 +59,11 @@ OPTIONAL_TYPES = {
     "Length": ("Length", "m", None),
     "Velocity": ("Velocity", "m/s", None),
     "Acceleration": ("Acceleration", "m/s2", None),
+    "FrequencyRate": ("FrequencyRate", "1/s2", None),
 }
 # The units of the optional types: the SI base units they are made of (<BaseUnit> attributes).
-OPTIONAL_UNITS = {"s": 's="1"', "m": 'm="1"', "m/s": 'm="1" s="-1"', "m/s2": 'm="1" s="-2"'}
+OPTIONAL_UNITS = {"s": 's="1"', "m": 'm="1"', "m/s": 'm="1" s="-1"', "m/s2": 'm="1" s="-2"',
+                  "1/s2": 's="-2"'}
 # Enumerations every model may use; a model's description can add its own.
 ENUMERATIONS = {
     "Sequence": dict(
@@ -78,11 +80,12 @@ ENUMERATIONS = {
 _CORE_SOURCES_FIRST = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation.c",
                        "core/kinematics_partials.c", "core/kinematics_euler_rates.c",
                        "core/kinematics_sequences.c", "core/kinematics_general_jacobian.c",
-                       "core/attitude.c", "elementary/elementary_reduce.c",
-                       "elementary/elementary_atan.c", "elementary/elementary_atan2.c"]
+                       "core/attitude.c", "core/attitude_angles.c",
+                       "elementary/elementary_reduce.c", "elementary/elementary_atan.c",
+                       "elementary/elementary_atan2.c"]
 _CORE_HEADERS_FIRST = ["core/sequences.h", "core/kinematics_general.h", "core/kinematics_chain.h",
                        "core/kinematics_sequences.h", "core/kinematics_general_jacobian.h",
-                       "core/attitude.h", "core/attitude_sequences.h",
+                       "core/attitude.h", "core/attitude_angles.h", "core/attitude_sequences.h",
                        "elementary/elementary.h", "elementary/elementary_sincos_three.h",
                        "elementary/elementary_arc_kernel.h", "elementary/elementary_double_double.h",
                        "elementary/elementary_coefficients.h"]
@@ -114,7 +117,7 @@ FMI2_HEADERS = ["fmi2/fmi2_layer.h"] + RUNTIME_HEADERS
 # The models, each a folder fmu_src/models/<name>/ with description.py, each built as an FMI 2.0
 # FMU (dist/<name>.fmu) and an FMI 3.0 FMU (dist/fmi3/<name>.fmu). The one list: CMake reads it
 # from cmake/generated.cmake, the scripts and the tests from here (import codegen.project).
-MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator", "PointKinematics"]
+MODELS = ["AngularKinematics", "EulerRates", "AttitudePropagator", "PointKinematics", "QuaternionKinematics"]
 FMI3_MODELS = MODELS  # the same list under its former name, while tests still read it
 
 # The model whose modelDescription.xml the repository root holds a generated copy of (the layout

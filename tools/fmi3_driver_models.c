@@ -28,6 +28,12 @@ const driver_model DRIVER_MODELS[] = {
      0, 0,
      {0, 3, 6, 9, 12, 15, 18, 21}, 8, 24,
      0},
+    {"QuaternionKinematics", "{a48f0945-5728-425c-a993-40484d7d9f7e}",
+     {0, 4, 8}, 3, 12,
+     {12, 15, 18, 21, 24, 33, 34, 37, 40, 43}, {3, 3, 3, 3, 9, 1, 3, 3, 3, 1}, 10, 32,
+     44, 0,
+     {0}, 0, 0,
+     0},
 };
 
 const size_t N_DRIVER_MODELS = sizeof DRIVER_MODELS / sizeof DRIVER_MODELS[0];

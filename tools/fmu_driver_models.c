@@ -6,12 +6,14 @@
 #include "EulerRates_variables.h"
 #include "AttitudePropagator_variables.h"
 #include "PointKinematics_variables.h"
+#include "QuaternionKinematics_variables.h"
 
 const driven_model DRIVEN_MODELS[] = {
     {"AngularKinematics", KIN_GUID, KIN_VARIABLES, KIN_N_VALUE_REFERENCES, KIN_N_INPUTS, 0},
     {"EulerRates", ER_GUID, ER_VARIABLES, ER_N_VALUE_REFERENCES, ER_N_INPUTS, 1},
     {"AttitudePropagator", AP_GUID, AP_VARIABLES, AP_N_VALUE_REFERENCES, AP_N_INPUTS, 0},
     {"PointKinematics", PK_GUID, PK_VARIABLES, PK_N_VALUE_REFERENCES, PK_N_INPUTS, 0},
+    {"QuaternionKinematics", QK_GUID, QK_VARIABLES, QK_N_VALUE_REFERENCES, QK_N_INPUTS, 1},
 };
 
 const size_t N_DRIVEN_MODELS = sizeof DRIVEN_MODELS / sizeof DRIVEN_MODELS[0];

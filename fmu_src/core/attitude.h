@@ -59,36 +59,10 @@
  *   units of rounding per step (tests/c/test_attitude.c checks this bound), so it cannot hide a
  *   drift of the method.
  *
- * 5. Angles of a sequence from R
- *   Every sequence is the chain R = R_a1(phi1) R_a2(phi2) R_a3(phi3) (kinematics_general.h,
- *   section 1; theta_k = phi_k body-fixed, phi_(4-k) space-fixed). With 0-based axes i = a1,
- *   j = a2, k the remaining axis, e = +1 when (i, j, k) is cyclic, -1 otherwise:
- *     Tait-Bryan (a3 = k):  phi2 = atan2(e R[i][k], sqrt(R[i][i]^2 + R[i][j]^2))  in [-pi/2, pi/2]
- *                           phi1 = atan2(-e R[j][k], R[k][k]),  phi3 = atan2(-e R[i][j], R[i][i])
- *                           distance = |cos phi2| = sqrt(R[i][i]^2 + R[i][j]^2)
- *     proper Euler (a3 = i): phi2 = atan2(sqrt(R[i][j]^2 + R[i][k]^2), R[i][i])   in [0, pi]
- *                           phi1 = atan2(R[j][i], -e R[k][i]),  phi3 = atan2(R[i][j], e R[i][k])
- *                           distance = |sin phi2| = sqrt(R[i][j]^2 + R[i][k]^2)
- *   Every attitude has two angle sets: (phi1, phi2, phi3) and (phi1 + pi, pi - phi2, phi3 + pi)
- *   (Tait-Bryan) or (phi1 + pi, -phi2, phi3 + pi) (proper Euler).
- *
- * 6. Continuity (ak_attitude_angles with a previous angle set)
- *   Of the two angle sets, each angle is first shifted by the multiple of 2 pi that brings it
- *   nearest to the previous value ("unwrapped"); the set nearer to the previous one (sum of
- *   squared differences) is taken. So theta1 and theta3 run on across +-pi, and a trajectory that
- *   passes through the singular angle comes out on the far side with theta2 beyond +-pi/2
- *   (Tait-Bryan) or below 0 (proper Euler) instead of bouncing back with a jump of pi in theta1
- *   and theta3. Without a previous set (initialization) the principal set of section 5 is taken.
- *   At the singular configuration (distance < AK_ATTITUDE_SINGULAR_DISTANCE) only theta1 +- theta3
- *   is defined. Choice: theta1 keeps its previous value and theta3 takes the rest: for chain
- *   rotation phi_held (phi1 body-fixed, phi3 space-fixed) held, the other end is read from
- *   R_a1(phi1)^T R = R_a2(phi2) R_a3(phi3) (row a2 holds cos, sin of phi3) or
- *   R R_a3(phi3)^T = R_a1(phi1) R_a2(phi2) (column a2 holds cos, sin of phi1). Every output stays
- *   finite there. Above that distance the formulas of section 5 lose about
- *   rounding(R) / distance in theta1 and theta3 (the attitude itself is exact).
+ * 5., 6. The angles of a sequence from R (sections 2 and 3 of attitude_angles.h).
  *
  * 7. Rates: theta_dot = W^-1 omega through ak_general_euler_rates (kinematics_general.h, section
- *   6), with theta from section 6 here. At the singular configuration, consistent with the
+ *   6), with theta from attitude_angles.h, section 3. At the singular configuration, consistent with the
  *   choice above, theta1_dot = 0, theta2_dot = c2 . omega and theta3_dot = c3 . (omega -
  *   theta2_dot c2) (c_m the chain axes, in the frame of omega; c1 is +-c3 there).
  */
@@ -97,20 +71,15 @@
 
 #include <stdbool.h>
 
+#include "attitude_angles.h"
 #include "kinematics_general.h"
 #include "sequences.h"
-
-/* Below this singularity distance theta1 is held (section 6): sqrt(DBL_EPSILON). */
-#define AK_ATTITUDE_SINGULAR_DISTANCE 1.4901161193847656e-08
 
 /* out := a (x) b (out may alias neither). */
 void ak_quat_multiply(const double a[4], const double b[4], double out[4]);
 
 /* out := exp((0, v)) (section 3). */
 void ak_quat_exp(const double v[3], double out[4]);
-
-/* R of a unit q (section 1), row-major. */
-void ak_quat_to_matrix(const double q[4], double R[3][3]);
 
 /* The cubic c[m][k] (coefficient of s^m, component k) of omega over a step (section 4): w0, w1,
  * w2 at the step start; wp, wdp (omega and omega_dot at the previous communication point, hp
@@ -137,20 +106,6 @@ void ak_attitude_retake_step(ak_frame frame, const double old_vector[3],
  * *correction (may be NULL) receives |q_new - q_uncorrected|, the size of the rounding
  * correction. */
 bool ak_attitude_advance(ak_frame frame, const double v[3], double q[4], double *correction);
-
-/* Angles of `sequence` for the attitude R (sections 5, 6). previous: the last angle set of the
- * same trajectory, or NULL for the principal set. Writes theta and the singularity distance;
- * returns true when the singular choice was taken. */
-bool ak_attitude_angles(const ak_sequence *sequence, double R[3][3],
-                        const double previous[3], double theta[3], double *distance);
-
-/* ak_attitude_angles for one sequence, without the sequence: the same results. */
-typedef bool (*ak_attitude_angles_function)(double R[3][3], const double previous[3],
-                                            double theta[3], double *distance);
-
-/* The function of `sequence` (an entry of AK_SEQUENCES or a copy of one), for a caller that
- * extracts the angles of one sequence many times. */
-ak_attitude_angles_function ak_attitude_angles_of(const ak_sequence *sequence);
 
 /* theta_dot for the angles theta of the attitude R and omega in `frame` components (section 7).
  * theta comes from ak_attitude_angles; singular is its result. */

@@ -1,5 +1,5 @@
 /* The general angle extraction of the attitude core before its per-sequence functions, as the
- * reference of tests/c/test_attitude_angles_bits.c: ak_attitude_angles' contract (attitude.h). */
+ * reference of tests/c/test_attitude_angles_bits.c: ak_attitude_angles' contract (attitude_angles.h). */
 #ifndef AK_ATTITUDE_ANGLES_REFERENCE_H
 #define AK_ATTITUDE_ANGLES_REFERENCE_H
 

@@ -95,9 +95,10 @@ int main(int argc, char **argv) {
         const double phase = (double)(step % INPUT_PERIOD) * 1e-4;
         fmi2Real inputs[AK_TEST_MAX_INPUTS];
         for (int j = 0; j < (int)ak_test_n_inputs(); j++) {
-            /* theta[2] (j = 1) within 1.1 rad of 0: away from EulerRates' singularity. */
+            /* theta[2] (j = 1) within 1.1 rad of 0: away from EulerRates' singularity; the phase j
+             * keeps the inputs apart (QuaternionKinematics: q = (0.1, 0.1, 0.1, 0.1) is singular). */
             inputs[j] = (j == 1 ? 1.0 : 1.0 + j) * sin(phase * (1.0 + 0.37 * j)) +
-                        0.1 * cos(phase * 97.0);
+                        0.1 * cos(phase * 97.0 + j);
         }
         fmi2Real outputs[AK_MAX_VARIABLES], expected[AK_MAX_VARIABLES];
         failed_calls += fmi2SetReal(c, AK_TEST_INPUT_VRS, ak_test_n_inputs(), inputs) != fmi2OK;

@@ -37,9 +37,10 @@ typedef struct {
 
 static void inputs_for(int instance, int step, fmi2Real inputs[AK_TEST_MAX_INPUTS]) {
     for (int j = 0; j < (int)ak_test_n_inputs(); j++) {
-        /* theta[2] (j = 1) stays below 1.4 rad: away from EulerRates' singularity. */
+        /* theta[2] (j = 1) stays below 1.41 rad: away from EulerRates' singularity; the
+         * 0.001 j keeps the inputs apart at the first step (QuaternionKinematics refuses q = 0). */
         inputs[j] = sin(0.37 * instance + 0.011 * step * (j + 1)) * (1.0 + 0.1 * j) +
-                    0.0003 * (instance % 1000);
+                    0.0003 * (instance % 1000) + 0.001 * j;
     }
 }
 

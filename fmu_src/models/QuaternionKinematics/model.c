@@ -1,0 +1,104 @@
+/* The QuaternionKinematics model: an attitude quaternion q (any length) with its first and second
+ * time derivatives in; omega and alpha in both frames, the rotation matrix, |q|, and the angles
+ * of parameter sequence with their first and second derivatives out. Equations:
+ * core/quaternion_kinematics.h (omega, alpha, R), core/attitude_angles.h (the principal angles)
+ * and kinematics_general.h, section 6 (their rates: EulerRates' core).
+ *
+ * Refusals. q = 0 (or below the smallest normal double), or an output that overflows: the
+ * evaluation fails with a message naming q or the output and the values, every output keeps its
+ * last valid value, reads return fmi2Discard and so does fmi2DoStep. At the singular configuration
+ * of the sequence, as EulerRates: theta_dot and theta_ddot are not defined; they keep their last
+ * valid values, the other outputs are current, and the evaluation fails the same way; below
+ * `tolerance` a warning is logged (fmi2Warning). */
+#include "QuaternionKinematics_variables.h"
+
+#include <string.h>
+
+#include "attitude_angles.h"
+#include "kinematics_general.h"
+#include "quaternion_kinematics.h"
+
+_Static_assert(QK_N_VALUE_REFERENCES <= AK_MAX_VARIABLES, "the value array holds them");
+_Static_assert(QK_N_INPUTS <= AK_MAX_INPUTS, "the input arrays hold them");
+/* omega, alpha, R and q_norm are stored as one ak_quaternion_outputs: their value references
+ * follow it. */
+_Static_assert(QK_VR_OMEGA_BODY == QK_VR_OMEGA_FIXED + 3 && QK_VR_ALPHA_FIXED == QK_VR_OMEGA_FIXED + 6 &&
+                   QK_VR_ALPHA_BODY == QK_VR_OMEGA_FIXED + 9 && QK_VR_R == QK_VR_OMEGA_FIXED + 12 &&
+                   QK_VR_Q_NORM == QK_VR_OMEGA_FIXED + 21,
+               "the outputs follow ak_quaternion_outputs");
+_Static_assert(sizeof(ak_quaternion_outputs) == 22 * sizeof(double), "no padding");
+
+static ak_eval_status evaluate(ak_model_data *data) {
+    double *v = data->values;
+    const double *q = &v[QK_VR_Q];
+    ak_quaternion_outputs out;
+    const ak_quaternion_status status =
+        ak_quaternion_kinematics(q, &v[QK_VR_Q_DOT], &v[QK_VR_Q_DDOT], &out);
+    if (status == AK_QUATERNION_NOT_ATTITUDE) {
+        ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
+                     "%s: q = (%g, %g, %g, %g) is not an attitude: |q| is 0 or below the "
+                     "smallest normal double; the outputs keep their last valid values",
+                     AK_MODEL.model_identifier, q[0], q[1], q[2], q[3]);
+        return AK_EVAL_FAILED;
+    }
+    if (status == AK_QUATERNION_OVERFLOW) {
+        const double *o = (const double *)&out;
+        int k = 0;
+        while (o[k] - o[k] == 0.0) {
+            k++;
+        }
+        ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
+                     "%s: %s = %g overflows: |q| = %g, |q_dot| / |q| or |q_ddot| / |q| is too "
+                     "large; the outputs keep their last valid values",
+                     AK_MODEL.model_identifier, QK_VARIABLES[QK_VR_OMEGA_FIXED + k].name, o[k],
+                     out.q_norm);
+        return AK_EVAL_FAILED;
+    }
+    memcpy(&v[QK_VR_OMEGA_FIXED], &out, sizeof out);
+
+    const ak_sequence *sequence = &AK_SEQUENCES[(int)v[QK_VR_SEQUENCE] - 1];
+    double distance;
+    (void)ak_attitude_angles(sequence, out.R, NULL, &v[QK_VR_THETA], &distance);
+    const double tolerance = v[QK_VR_TOLERANCE];
+    double alpha_fixed[3], alpha_body[3]; /* the rates' own rotation of alpha: out's are kept */
+    const ak_rates_status rates = ak_general_euler_rates(
+        sequence, AK_FRAME_BODY, &v[QK_VR_THETA], out.omega_body, out.alpha_body, tolerance,
+        &v[QK_VR_THETA_DOT], &v[QK_VR_THETA_DDOT], alpha_fixed, alpha_body, &distance);
+    v[QK_VR_SINGULARITY_DISTANCE] = distance;
+    const char *singular_at = sequence->proper_euler ? "0 or pi" : "+-pi/2";
+    if (rates == AK_RATES_SINGULAR || rates == AK_RATES_OVERFLOW) {
+        ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
+                     "%s: theta[2] = %.17g is %s the singular configuration of %s (theta[2] = "
+                     "%s): singularity_distance = %g; theta_dot and theta_ddot are not defined "
+                     "there and keep their last valid values",
+                     AK_MODEL.model_identifier, v[QK_VR_THETA + 1],
+                     rates == AK_RATES_SINGULAR ? "at" : "so close to that the rates overflow at",
+                     sequence->name, singular_at, distance);
+        return AK_EVAL_FAILED;
+    }
+    if (rates == AK_RATES_NEAR_SINGULAR) {
+        ak_model_log(data, AK_LOG_WARNING, AK_STATUS_WARNING,
+                     "%s: theta[2] = %.17g is near the singular configuration of %s (theta[2] = "
+                     "%s): singularity_distance = %g < tolerance = %g; theta_dot[1] and "
+                     "theta_dot[3] grow as 1/singularity_distance",
+                     AK_MODEL.model_identifier, v[QK_VR_THETA + 1], sequence->name, singular_at,
+                     distance, tolerance);
+        return AK_EVAL_WARNING;
+    }
+    return AK_EVAL_OK;
+}
+
+const ak_model AK_MODEL = {
+    .model_identifier = "QuaternionKinematics",
+    .guid = QK_GUID,
+    .variables = QK_VARIABLES,
+    .n_value_references = QK_N_VALUE_REFERENCES,
+    .n_inputs = QK_N_INPUTS,
+    .evaluate = evaluate,
+    .evaluate_lazy = NULL,
+    .jacobian = NULL,
+    .output_derivatives = NULL,
+    .can_interpolate_inputs = true,
+    .derived = &QK_DERIVED_OUTPUTS,
+    .evaluate_in_step = true, /* a refusal fails the step, as a read */
+};
