@@ -5,6 +5,7 @@ set(AK_CORE_SOURCES
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
   fmu_src/core/kinematics_rotation.c
+  fmu_src/core/kinematics_rotation_matrix.c
   fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_euler_rates.c
   fmu_src/core/kinematics_sequences.c
@@ -95,6 +96,7 @@ set(AK_CORE_SOURCES_AngularKinematics
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
   fmu_src/core/kinematics_rotation.c
+  fmu_src/core/kinematics_rotation_matrix.c
   fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
@@ -188,7 +190,10 @@ set(AK_FMI3_ARRAYS_QuaternionKinematics
 set(AK_CORE_SOURCES_QuaternionKinematics
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
+  fmu_src/core/kinematics_rotation_matrix.c
+  fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_general_jacobian.c
   fmu_src/core/attitude_angles.c
   fmu_src/elementary/elementary_reduce.c
   fmu_src/elementary/elementary_atan2.c
@@ -197,6 +202,7 @@ set(AK_CORE_HEADERS_QuaternionKinematics
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
   fmu_src/core/kinematics_chain.h
+  fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude_angles.h
   fmu_src/core/attitude_sequences.h
   fmu_src/elementary/elementary.h

@@ -20,15 +20,19 @@ static void twice_products(const double u[4], const double x[4], double body[3],
     }
 }
 
-ak_quaternion_status ak_quaternion_kinematics(const double q[4], const double q_dot[4],
-                                              const double q_ddot[4], ak_quaternion_outputs *out) {
+/* The largest |q_k|: |q| is computed scaled by it, so that no square overflows or underflows. */
+static double largest_component(const double q[4]) {
     double largest = 0.0;
     for (int k = 0; k < 4; k++) {
         largest = fmax(largest, fabs(q[k]));
     }
-    if (!(largest >= DBL_MIN)) {
-        return AK_QUATERNION_NOT_ATTITUDE;
-    }
+    return largest;
+}
+
+/* |q|, and u, p and r of the header's notation (q, q_dot, q_ddot times 1 / |q|); largest from
+ * largest_component, at least DBL_MIN. */
+static double normalized(const double q[4], const double q_dot[4], const double q_ddot[4],
+                         double largest, double u[4], double p[4], double r[4]) {
     const double scale = 1.0 / largest; /* finite from DBL_MIN on */
     double sum = 0.0;
     for (int k = 0; k < 4; k++) {
@@ -36,14 +40,24 @@ ak_quaternion_status ak_quaternion_kinematics(const double q[4], const double q_
         sum += x * x;
     }
     const double n = largest * sqrt(sum);
-    out->q_norm = n; /* above the largest double for some q near it: then u = 0, refused below */
-    const double inverse = 1.0 / n;
-    double u[4], p[4], r[4];
+    const double inverse = 1.0 / n; /* 0 when n overflowed: the caller refuses that */
     for (int k = 0; k < 4; k++) {
         u[k] = q[k] * inverse;
         p[k] = q_dot[k] * inverse;
         r[k] = q_ddot[k] * inverse;
     }
+    return n;
+}
+
+ak_quaternion_status ak_quaternion_kinematics(const double q[4], const double q_dot[4],
+                                              const double q_ddot[4], ak_quaternion_outputs *out) {
+    const double largest = largest_component(q);
+    if (!(largest >= DBL_MIN)) {
+        return AK_QUATERNION_NOT_ATTITUDE;
+    }
+    double u[4], p[4], r[4];
+    const double n = normalized(q, q_dot, q_ddot, largest, u, p, r);
+    out->q_norm = n;
     const double a2 = 2.0 * (u[0] * p[0] + u[1] * p[1] + u[2] * p[2] + u[3] * p[3]);
     double r_body[3], r_fixed[3];
     twice_products(u, p, out->omega_body, out->omega_fixed);
@@ -58,4 +72,60 @@ ak_quaternion_status ak_quaternion_kinematics(const double q[4], const double q_
     }
     ak_quat_to_matrix(u, out->R);
     return finite ? AK_QUATERNION_OK : AK_QUATERNION_OVERFLOW;
+}
+
+/* body := 2 vec(a* x + b* y), fixed := 2 vec(x a* + y b*): the change of twice_products(u, x)
+ * with a = du, x = p (or r) and b = u, y = dp. */
+static void twice_products_tangent(const double a[4], const double x[4], const double b[4],
+                                   const double y[4], double body[3], double fixed[3]) {
+    double body_1[3], fixed_1[3], body_2[3], fixed_2[3];
+    twice_products(a, x, body_1, fixed_1);
+    twice_products(b, y, body_2, fixed_2);
+    for (int k = 0; k < 3; k++) {
+        body[k] = body_1[k] + body_2[k];
+        fixed[k] = fixed_1[k] + fixed_2[k];
+    }
+}
+
+void ak_quaternion_kinematics_tangent(const double q[4], const double q_dot[4],
+                                      const double q_ddot[4], const double dq[4],
+                                      const double dq_dot[4], const double dq_ddot[4],
+                                      ak_quaternion_outputs *d_out) {
+    double u[4], p[4], r[4];
+    const double n = normalized(q, q_dot, q_ddot, largest_component(q), u, p, r);
+    const double inverse = 1.0 / n;
+    const double dn = u[0] * dq[0] + u[1] * dq[1] + u[2] * dq[2] + u[3] * dq[3];
+    const double dn_over_n = dn * inverse;
+    double du[4], dp[4], dr[4];
+    for (int k = 0; k < 4; k++) {
+        du[k] = dq[k] * inverse - u[k] * dn_over_n;
+        dp[k] = dq_dot[k] * inverse - p[k] * dn_over_n;
+        dr[k] = dq_ddot[k] * inverse - r[k] * dn_over_n;
+    }
+    double omega_body[3], omega_fixed[3], d_r_body[3], d_r_fixed[3];
+    twice_products(u, p, omega_body, omega_fixed);
+    twice_products_tangent(du, p, u, dp, d_out->omega_body, d_out->omega_fixed);
+    twice_products_tangent(du, r, u, dr, d_r_body, d_r_fixed);
+    double a2 = 0.0, d_a2 = 0.0;
+    for (int k = 0; k < 4; k++) {
+        a2 += 2.0 * u[k] * p[k];
+        d_a2 += 2.0 * (du[k] * p[k] + u[k] * dp[k]);
+    }
+    for (int k = 0; k < 3; k++) {
+        d_out->alpha_body[k] = d_r_body[k] - d_a2 * omega_body[k] - a2 * d_out->omega_body[k];
+        d_out->alpha_fixed[k] = d_r_fixed[k] - d_a2 * omega_fixed[k] - a2 * d_out->omega_fixed[k];
+    }
+    /* R(u) of attitude_angles.h, section 1, differentiated term by term. */
+    const double w = u[0], x = u[1], y = u[2], z = u[3];
+    const double dw = du[0], dx = du[1], dy = du[2], dz = du[3];
+    d_out->R[0][0] = -4.0 * (y * dy + z * dz);
+    d_out->R[0][1] = 2.0 * (dx * y + x * dy - dw * z - w * dz);
+    d_out->R[0][2] = 2.0 * (dx * z + x * dz + dw * y + w * dy);
+    d_out->R[1][0] = 2.0 * (dx * y + x * dy + dw * z + w * dz);
+    d_out->R[1][1] = -4.0 * (x * dx + z * dz);
+    d_out->R[1][2] = 2.0 * (dy * z + y * dz - dw * x - w * dx);
+    d_out->R[2][0] = 2.0 * (dx * z + x * dz - dw * y - w * dy);
+    d_out->R[2][1] = 2.0 * (dy * z + y * dz + dw * x + w * dx);
+    d_out->R[2][2] = -4.0 * (x * dx + y * dy);
+    d_out->q_norm = dn;
 }

@@ -54,4 +54,15 @@ typedef enum {
 ak_quaternion_status ak_quaternion_kinematics(const double q[4], const double q_dot[4],
                                               const double q_ddot[4], ak_quaternion_outputs *out);
 
+/* The change of the outputs along a change (dq, dq_dot, dq_ddot) of the inputs (forward mode):
+ * with dn = u . dq, du = (dq - u dn) / n, dp = (dq_dot - p dn) / n, dr = (dq_ddot - r dn) / n,
+ *     d omega_body = 2 vec(du* p + u* dp),   d omega_fixed = 2 vec(dp u* + p du*),
+ *     d alpha_body = 2 vec(du* r + u* dr) - d(2a) omega_body - 2a d omega_body   (fixed alike),
+ *     dR = the derivative of R(u) along du,  d|q| = dn.
+ * For the inputs of an AK_QUATERNION_OK evaluation. */
+void ak_quaternion_kinematics_tangent(const double q[4], const double q_dot[4],
+                                      const double q_ddot[4], const double dq[4],
+                                      const double dq_dot[4], const double dq_ddot[4],
+                                      ak_quaternion_outputs *d_out);
+
 #endif

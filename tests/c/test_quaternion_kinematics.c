@@ -190,7 +190,41 @@ static void refusals(void) {
              out.omega_body[0]);
 }
 
+/* The tangent against central differences of the outputs along random directions (error of the
+ * differences: about h^2 times the third derivative, and rounding / h). */
+static void tangent(void) {
+    double worst = 0.0;
+    for (int trial = 0; trial < 200; trial++) {
+        const curve c = make_curve(1.0);
+        double d[12], plus[12], minus[12];
+        for (int k = 0; k < 12; k++) {
+            d[k] = uniform();
+        }
+        const double h = 1e-5;
+        for (int k = 0; k < 12; k++) {
+            const double x = k < 4 ? c.q[k] : k < 8 ? c.q_dot[k - 4] : c.q_ddot[k - 8];
+            plus[k] = x + h * d[k];
+            minus[k] = x - h * d[k];
+        }
+        ak_quaternion_outputs d_out, up, down;
+        ak_quaternion_kinematics_tangent(c.q, c.q_dot, c.q_ddot, d, d + 4, d + 8, &d_out);
+        ak_quaternion_kinematics(plus, plus + 4, plus + 8, &up);
+        ak_quaternion_kinematics(minus, minus + 4, minus + 8, &down);
+        const double *t = (const double *)&d_out, *u = (const double *)&up,
+                     *w = (const double *)&down;
+        for (size_t i = 0; i < sizeof d_out / sizeof(double); i++) {
+            const double difference = (u[i] - w[i]) / (2.0 * h);
+            const double error = fabs(t[i] - difference) / (1.0 + fabs(difference));
+            worst = fmax(worst, error);
+            ak_check(error < 1e-6, "trial %d: tangent of output %zu: %.17g, differences %.17g",
+                     trial, i, t[i], difference);
+        }
+    }
+    printf("tangent: largest difference to central differences %.3g\n", worst);
+}
+
 int main(void) {
+    tangent();
     spin();
     chosen_motions();
     sign_and_scale();

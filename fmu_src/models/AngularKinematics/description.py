@@ -19,7 +19,7 @@ SOURCES = ["model.c"]  # this folder's hand-written glue; the generated table is
 # The core's sources this model calls (relative to fmu_src/): its FMU compiles and ships these
 # alone, with the headers they and the model include (tests/python/test_dead_code.py).
 CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation.c",
-        "core/kinematics_partials.c", "core/kinematics_sequences.c",
+        "core/kinematics_rotation_matrix.c", "core/kinematics_partials.c", "core/kinematics_sequences.c",
         "core/kinematics_general_jacobian.c", "elementary/elementary_reduce.c",
         "elementary/elementary_atan.c"]
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections, and

@@ -12,7 +12,9 @@ DESCRIPTION = ("Angular velocity and acceleration of a body from its attitude qu
 SOURCES = ["model.c"]
 # The core's sources this model calls (relative to fmu_src/): its FMU compiles and ships these
 # alone, with the headers they and the model include (tests/python/test_dead_code.py).
-CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_euler_rates.c",
+CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation_matrix.c",
+        "core/kinematics_partials.c",
+        "core/kinematics_euler_rates.c", "core/kinematics_general_jacobian.c",
         "core/attitude_angles.c", "core/quaternion_kinematics.c",
         "elementary/elementary_reduce.c", "elementary/elementary_atan2.c"]
 # The core's unit test (tests/c/, registered with ctest by CMake from this list).
@@ -20,9 +22,7 @@ CORE_TESTS = ["tests/c/test_quaternion_kinematics.c"]
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections.
 DOCUMENTATION = [("docs/quaternion_kinematics.md", None)]
 FIGURES = []
-# No directional derivatives: those of theta_dot and theta_ddot need the second derivatives of
-# the rate matrix W, which the angle core (EulerRates') does not give.
-CAPABILITIES = dict(provides_directional_derivative=False, can_interpolate_inputs=True,
+CAPABILITIES = dict(provides_directional_derivative=True, can_interpolate_inputs=True,
                     max_output_derivative_order=0)
 ENUMERATIONS = {}
 

@@ -16,6 +16,7 @@
 
 #include "attitude_angles.h"
 #include "kinematics_general.h"
+#include "kinematics_general_jacobian.h"
 #include "quaternion_kinematics.h"
 
 _Static_assert(QK_N_VALUE_REFERENCES <= AK_MAX_VARIABLES, "the value array holds them");
@@ -88,6 +89,116 @@ static ak_eval_status evaluate(ak_model_data *data) {
     return AK_EVAL_OK;
 }
 
+/* inverse := M^-1 (adjugate over determinant). */
+static void invert(double M[3][3], double inverse[3][3]) {
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            const int r1 = (j + 1) % 3, r2 = (j + 2) % 3, c1 = (i + 1) % 3, c2 = (i + 2) % 3;
+            inverse[i][j] = M[r1][c1] * M[r2][c2] - M[r1][c2] * M[r2][c1];
+        }
+    }
+    const double det = M[0][0] * inverse[0][0] + M[0][1] * inverse[1][0] + M[0][2] * inverse[2][0];
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            inverse[i][j] /= det;
+        }
+    }
+}
+
+/* out := A x (rows of A from `row`, columns from `column` of the general Jacobian) */
+static void block_times(double A[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS], int row,
+                        int column, const double x[3], double out[3]) {
+    for (int i = 0; i < 3; i++) {
+        out[i] = A[row + i][column] * x[0] + A[row + i][column + 1] * x[1] +
+                 A[row + i][column + 2] * x[2];
+    }
+}
+
+/* Rows of the general Jacobian (kinematics_general_jacobian.h) and its input columns. */
+enum { OMEGA_BODY_ROW = 3, ALPHA_BODY_ROW = 9, THETA_COLUMN = 0, RATE_COLUMN = 3 };
+
+/* The outputs' changes along one change of the inputs (value references 0 .. 11 in `d`): omega,
+ * alpha, R, |q| from the core's tangent; the angles and their rates as the inverse of the forward
+ * map (AngularKinematics' core) at the current angles: omega_body = W_body theta_dot and
+ * alpha_body = W_body theta_ddot + (terms in theta, theta_dot), differentiated:
+ *     W_body d theta       = 2 vec(u* dq) / |q|   (the rotation of the attitude along dq),
+ *     W_body d theta_dot   = d omega_body - (d omega_body / d theta) d theta,
+ *     W_body d theta_ddot  = d alpha_body - (d alpha_body / d theta) d theta
+ *                                         - (d alpha_body / d theta_dot) d theta_dot. */
+static void change(const ak_model_data *data, const double theta[3],
+                   double full[][AK_GENERAL_N_INPUTS], double W_inverse[3][3],
+                   const double d[QK_N_INPUTS], double values[]) {
+    const double *v = data->values;
+    ak_quaternion_outputs d_out, rotation;
+    ak_quaternion_kinematics_tangent(&v[QK_VR_Q], &v[QK_VR_Q_DOT], &v[QK_VR_Q_DDOT], &d[QK_VR_Q],
+                                     &d[QK_VR_Q_DOT], &d[QK_VR_Q_DDOT], &d_out);
+    memcpy(&values[QK_VR_OMEGA_FIXED], &d_out, sizeof d_out);
+    const double zero[4] = {0.0, 0.0, 0.0, 0.0};
+    (void)ak_quaternion_kinematics(&v[QK_VR_Q], &d[QK_VR_Q], zero, &rotation);
+    double *d_theta = &values[QK_VR_THETA], *d_rate = &values[QK_VR_THETA_DOT],
+           *d_acceleration = &values[QK_VR_THETA_DDOT];
+    double by_theta[3], by_rate[3], rest[3];
+    for (int i = 0; i < 3; i++) {
+        d_theta[i] = W_inverse[i][0] * rotation.omega_body[0] +
+                     W_inverse[i][1] * rotation.omega_body[1] +
+                     W_inverse[i][2] * rotation.omega_body[2];
+    }
+    block_times(full, OMEGA_BODY_ROW, THETA_COLUMN, d_theta, by_theta);
+    for (int i = 0; i < 3; i++) {
+        rest[i] = d_out.omega_body[i] - by_theta[i];
+    }
+    for (int i = 0; i < 3; i++) {
+        d_rate[i] = W_inverse[i][0] * rest[0] + W_inverse[i][1] * rest[1] + W_inverse[i][2] * rest[2];
+    }
+    block_times(full, ALPHA_BODY_ROW, THETA_COLUMN, d_theta, by_theta);
+    block_times(full, ALPHA_BODY_ROW, RATE_COLUMN, d_rate, by_rate);
+    for (int i = 0; i < 3; i++) {
+        rest[i] = d_out.alpha_body[i] - by_theta[i] - by_rate[i];
+    }
+    for (int i = 0; i < 3; i++) {
+        d_acceleration[i] = W_inverse[i][0] * rest[0] + W_inverse[i][1] * rest[1] +
+                            W_inverse[i][2] * rest[2];
+    }
+    /* singularity_distance = |cos theta[2]| (Tait-Bryan) or |sin theta[2]| (proper Euler). */
+    ak_sines sines;
+    ak_angle_sines(theta, &sines);
+    const double s = sines.sin[1], c = sines.cos[1];
+    const ak_sequence *sequence = &AK_SEQUENCES[(int)v[QK_VR_SEQUENCE] - 1];
+    values[QK_VR_SINGULARITY_DISTANCE] =
+        sequence->proper_euler ? (s < 0.0 ? -c : c) * d_theta[1] : (c < 0.0 ? s : -s) * d_theta[1];
+}
+
+/* Column k of the Jacobian is the change of the outputs along input k. */
+static void jacobian(const ak_model_data *data, const unsigned int out[], size_t n_out,
+                     double J[][AK_MAX_KNOWNS]) {
+    /* The angles and their rates of the current inputs, as evaluate computes them: the outputs
+     * in data->values may be those of earlier inputs (the layers evaluate only for a read). */
+    const double *v = data->values;
+    const ak_sequence *sequence = &AK_SEQUENCES[(int)v[QK_VR_SEQUENCE] - 1];
+    ak_quaternion_outputs now;
+    (void)ak_quaternion_kinematics(&v[QK_VR_Q], &v[QK_VR_Q_DOT], &v[QK_VR_Q_DDOT], &now);
+    double theta[3], theta_dot[3], theta_ddot[3], alpha_fixed[3], alpha_body[3], distance;
+    (void)ak_attitude_angles(sequence, now.R, NULL, theta, &distance);
+    (void)ak_general_euler_rates(sequence, AK_FRAME_BODY, theta, now.omega_body, now.alpha_body,
+                                 1.0, theta_dot, theta_ddot, alpha_fixed, alpha_body, &distance);
+    double full[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS], W[3][3], W_inverse[3][3];
+    ak_general_jacobian(sequence, theta, theta_dot, theta_ddot, full);
+    for (int i = 0; i < 3; i++) { /* d omega_body / d theta_dot = W_body */
+        for (int j = 0; j < 3; j++) {
+            W[i][j] = full[OMEGA_BODY_ROW + i][RATE_COLUMN + j];
+        }
+    }
+    invert(W, W_inverse);
+    for (int k = 0; k < QK_N_INPUTS; k++) {
+        double direction[QK_N_INPUTS] = {0.0}, values[QK_N_VALUE_REFERENCES] = {0.0};
+        direction[k] = 1.0;
+        change(data, theta, full, W_inverse, direction, values);
+        for (size_t i = 0; i < n_out; i++) {
+            J[i][k] = values[out[i]];
+        }
+    }
+}
+
 const ak_model AK_MODEL = {
     .model_identifier = "QuaternionKinematics",
     .guid = QK_GUID,
@@ -96,7 +207,7 @@ const ak_model AK_MODEL = {
     .n_inputs = QK_N_INPUTS,
     .evaluate = evaluate,
     .evaluate_lazy = NULL,
-    .jacobian = NULL,
+    .jacobian = jacobian,
     .output_derivatives = NULL,
     .can_interpolate_inputs = true,
     .derived = &QK_DERIVED_OUTPUTS,

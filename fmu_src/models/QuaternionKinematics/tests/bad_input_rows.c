@@ -1,7 +1,7 @@
 /* The bad-input rows of QuaternionKinematics (see fmi2_bad_input_table.h): its value references
  * (inputs 0 to 11, outputs 12 to 43, parameters sequence 44, tolerance 45), its parameters, the
- * step that fails at the singular configuration, and the capabilities it does not have
- * (directional and output derivatives). */
+ * step that fails at the singular configuration, and the capability it does not have (output
+ * derivatives). */
 #include <math.h>
 
 #include "fmi2_bad_input_table.h"
@@ -82,14 +82,7 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
      {.vr = (const fmi2ValueReference[]){1}, .nvr = 1, .values = (fmi2Real[]){0.0}}, fmi2Error,
      "fmi2SetReal: illegal call in state StepFailed", false},
 
-    /* --- capabilities QuaternionKinematics does not have --------------------------------------- */
-    {STEP_COMPLETE, "fmi2GetDirectionalDerivative(c, {12}, 1, {0}, 1, {1}, dv)",
-     AK_OP_GET_DIRECTIONAL_DERIVATIVE,
-     {.vr = (const fmi2ValueReference[]){12}, .nvr = 1, .vr2 = (const fmi2ValueReference[]){0},
-      .nvr2 = 1, .known = (fmi2Real[]){1.0}, .values2 = (fmi2Real[1]){0}},
-     fmi2Error,
-     "fmi2GetDirectionalDerivative: not provided by QuaternionKinematics "
-     "(modelDescription.xml: providesDirectionalDerivative=\"false\")", false},
+    /* --- the capability QuaternionKinematics does not have ------------------------------------ */
     {STEP_COMPLETE, "fmi2GetRealOutputDerivatives(c, {12}, 1, {1}, v)",
      AK_OP_GET_REAL_OUTPUT_DERIVATIVES,
      {.vr = (const fmi2ValueReference[]){12}, .nvr = 1, .values2 = (fmi2Integer[]){1},
