@@ -495,6 +495,8 @@ def test_q_zero_is_refused_naming_q_and_the_next_valid_set_works(new_instance, f
 
 
 def test_an_overflow_is_refused_naming_the_output(new_instance, fmi_version):
+    """q = (1e-300, 0, 0, 0), q_dot = (0, 1e10, 0, 0): q_dot / |q| = 1e310 overflows; the message
+    names an angular velocity or acceleration output."""
     instance = start(new_instance, fmi_version=fmi_version)
     messages = refused(instance, (np.array([1e-300, 0, 0, 0]), np.array([0, 1e10, 0, 0]),
                                   np.zeros(4)), "overflows")
@@ -643,7 +645,8 @@ def test_model_structure_lists_exactly_the_references_dependencies():
 def test_outputs_follow_the_inputs_before_and_between_steps_fmi3_as_fmi2(new_instance):
     """Five input sets, the first before any step, the others each after a step: every output read
     right after the set is that of the new inputs (omega, alpha, R, q_norm within 1e-15 of the
-    reference) and FMI 3's arrays give the bits of FMI 2's scalars."""
+    reference) and FMI 3's arrays give the bits of FMI 2's scalars. Planted: FMI 3's last set
+    left out (its outputs those of the inputs before the step) fails the bits."""
     two = start(new_instance, fmi_version=2)
     three = start(new_instance, fmi_version=3)
     t = 0.0
