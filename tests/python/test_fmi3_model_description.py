@@ -149,8 +149,12 @@ def test_sources_compile_with_fmpy_and_compute_the_same_bits(model, tmp_path, re
     binary = pathlib.Path("binaries") / "x86_64-linux" / f"{model}.so"
     # what the packaged binary (linked with --no-undefined) needs: libm where that one calls it
     assert set(needed_libraries(pathlib.Path(unzipdir) / binary)) <= set(needed_libraries(copy / binary))
-    inputs = [v.name for v in unzipped(model)[1].modelVariables if v.causality == "input"]
-    start = {inputs[0]: [0.3, -0.4, 1.1], inputs[1]: [0.5, 0.25, -1.0]}
+    inputs = [v for v in unzipped(model)[1].modelVariables if v.causality == "input"]
+
+    def sized(values, variable):  # 3 elements, or 4 (a quaternion): the values repeated
+        return np.resize(values, int(np.prod([int(d.start) for d in variable.dimensions]))).tolist()
+    start = {inputs[0].name: sized([0.3, -0.4, 1.1], inputs[0]),
+             inputs[1].name: sized([0.5, 0.25, -1.0], inputs[1])}
     if any(v.name == "sequence" for v in unzipped(model)[1].modelVariables):
         start["sequence"] = 7
 
