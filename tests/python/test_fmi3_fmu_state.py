@@ -49,7 +49,8 @@ def started(model, sequence=11):
     instance = Instance3(model)
     zeroth, first = first_inputs(instance)
     instance.initialize(parameters={"sequence": sequence} if "sequence" in instance.vr else {},
-                        inputs={zeroth: [0.4, 0.3, -0.2], first: [1.0, 2.0, 3.0]})
+                        inputs={zeroth: np.resize([0.4, 0.3, -0.2], instance.size[zeroth]),
+                                first: np.resize([1.0, 2.0, 3.0], instance.size[first])})
     assert instance.do_step(0.0, 0.25)[0] == OK
     return instance, first
 
