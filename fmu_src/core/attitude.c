@@ -30,6 +30,19 @@ void ak_quat_exp(const double v[3], double out[4]) {
     out[3] = sinc * v[2];
 }
 
+void ak_quat_to_matrix(const double q[4], double R[3][3]) {
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    R[0][0] = 1.0 - 2.0 * (y * y + z * z);
+    R[0][1] = 2.0 * (x * y - w * z);
+    R[0][2] = 2.0 * (x * z + w * y);
+    R[1][0] = 2.0 * (x * y + w * z);
+    R[1][1] = 1.0 - 2.0 * (x * x + z * z);
+    R[1][2] = 2.0 * (y * z - w * x);
+    R[2][0] = 2.0 * (x * z - w * y);
+    R[2][1] = 2.0 * (y * z + w * x);
+    R[2][2] = 1.0 - 2.0 * (x * x + y * y);
+}
+
 void ak_attitude_input_polynomial(const double w0[3], const double w1[3], const double w2[3],
                                   const double *wp, const double *wdp, double hp,
                                   double c[4][3]) {

@@ -59,10 +59,11 @@
  *   units of rounding per step (tests/c/test_attitude.c checks this bound), so it cannot hide a
  *   drift of the method.
  *
- * 5., 6. The angles of a sequence from R (sections 2 and 3 of attitude_angles.h).
+ * 5., 6. The angles of a sequence from R (sections 1 and 2 of attitude_angles.h).
  *
  * 7. Rates: theta_dot = W^-1 omega through ak_general_euler_rates (kinematics_general.h, section
- *   6), with theta from attitude_angles.h, section 3. At the singular configuration, consistent with the
+ *   6), with theta from attitude_angles.h, section 2. At the singular configuration, consistent with
+ *   the
  *   choice above, theta1_dot = 0, theta2_dot = c2 . omega and theta3_dot = c3 . (omega -
  *   theta2_dot c2) (c_m the chain axes, in the frame of omega; c1 is +-c3 there).
  */
@@ -80,6 +81,9 @@ void ak_quat_multiply(const double a[4], const double b[4], double out[4]);
 
 /* out := exp((0, v)) (section 3). */
 void ak_quat_exp(const double v[3], double out[4]);
+
+/* R of a unit q (section 1), row-major. */
+void ak_quat_to_matrix(const double q[4], double R[3][3]);
 
 /* The cubic c[m][k] (coefficient of s^m, component k) of omega over a step (section 4): w0, w1,
  * w2 at the step start; wp, wdp (omega and omega_dot at the previous communication point, hp

@@ -9,27 +9,14 @@
 static const double PI = 3.14159265358979323846;
 static const double TWO_PI = 6.28318530717958647692;
 
-void ak_quat_to_matrix(const double q[4], double R[3][3]) {
-    const double w = q[0], x = q[1], y = q[2], z = q[3];
-    R[0][0] = 1.0 - 2.0 * (y * y + z * z);
-    R[0][1] = 2.0 * (x * y - w * z);
-    R[0][2] = 2.0 * (x * z + w * y);
-    R[1][0] = 2.0 * (x * y + w * z);
-    R[1][1] = 1.0 - 2.0 * (x * x + z * z);
-    R[1][2] = 2.0 * (y * z - w * x);
-    R[2][0] = 2.0 * (x * z - w * y);
-    R[2][1] = 2.0 * (y * z + w * x);
-    R[2][2] = 1.0 - 2.0 * (x * x + y * y);
-}
-
-/* Axes of the chain (0-based, section 2), for the singular choice. */
+/* Axes of the chain (0-based, section 1), for the singular choice. */
 typedef struct {
     int i, j, k;
     bool proper;
 } chain_axes;
 
 /* The angle x of R_a(x) from its row (or column) `line` != a of a matrix M that has the factor
- * R_a(x) on its right (row) or left (column); section 3. */
+ * R_a(x) on its right (row) or left (column); section 2. */
 static double angle_from_row(int a, int line, double M[3][3]) {
     const int next = (a + 1) % 3, after = (a + 2) % 3;
     return line == next ? ak_atan2(-M[line][after], M[line][line])
@@ -93,7 +80,7 @@ static double squared_distance(const double a[3], const double b[3]) {
     return sum;
 }
 
-/* The singular choice (section 3): theta1 held at previous[0], theta3 from the rest. Rare, so
+/* The singular choice (section 2): theta1 held at previous[0], theta3 from the rest. Rare, so
  * general over the chains and out of line. */
 #if defined(__GNUC__)
 __attribute__((noinline))
@@ -129,7 +116,7 @@ static void singular_angles(bool space, const chain_axes *c, double R[3][3], dou
 
 /* *set = unwrap(x, reference) for a principal angle x (in [-pi, pi], or NaN), and whether it is
  * near: within 1/2 of reference, with |reference| < 1e9 so that the rounding of the unwrapping
- * stays far below the margin of section 3's choice. When |gap| < 3, *set - reference is -gap
+ * stays far below the margin of section 2's choice. When |gap| < 3, *set - reference is -gap
  * (x - r = -(r - x); both exact when x = 0) and |reference| < pi + 1/2: the test is |gap| < 1/2. */
 static AK_CHAIN_INLINE bool unwrap_near(double x, double reference, double *set) {
     const double gap = reference - x;
@@ -142,7 +129,7 @@ static AK_CHAIN_INLINE bool unwrap_near(double x, double reference, double *set)
 }
 
 /* theta: the nearer to previous of the principal set (theta order) unwrapped, and the other
- * set unwrapped (section 3). Out of line: the usual step keeps the first. */
+ * set unwrapped (section 2). Out of line: the usual step keeps the first. */
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
@@ -171,7 +158,7 @@ static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, 
                                          double *distance) {
     const int k = 3 - i - j;
     const double e = (j == (i + 1) % 3) ? 1.0 : -1.0;
-    /* The principal chain angles (section 2): the arguments, then the three arctangents. */
+    /* The principal chain angles (section 1): the arguments, then the three arctangents. */
     double d, y[3], x[3];
     if (proper) {
         d = sqrt(R[i][j] * R[i][j] + R[i][k] * R[i][k]);
@@ -212,7 +199,7 @@ static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, 
                      & (int)unwrap_near(phi[1], previous[1], &set[1])
                      & (int)unwrap_near(last, previous[2], &set[2]);
     if (near) {
-        /* The other set is pi away in theta1 and theta3 (section 2): at squared distance above
+        /* The other set is pi away in theta1 and theta3 (section 1): at squared distance above
          * 2 (pi - 1/2)^2 > 3/4, the most this one can have. */
         for (int m = 0; m < 3; m++) {
             theta[m] = set[m];

@@ -1,16 +1,10 @@
 /*
- * Angles of any of the 24 rotation sequences (sequences.h) from the attitude: the rotation matrix
- * of a unit quaternion, the principal angles, and their continuity across +-pi and through the
- * singular configuration. Plain C, doubles in, doubles out, no FMI types. The half of the attitude
- * core (attitude.h) that reads angles off an attitude without propagating it.
+ * Angles of any of the 24 rotation sequences (sequences.h) from the attitude's rotation matrix R:
+ * the principal angles, and their continuity across +-pi and through the singular configuration.
+ * Plain C, doubles in, doubles out, no FMI types. The half of the attitude core (attitude.h) that
+ * reads angles off an attitude without propagating it.
  *
- * 1. R(q) for a unit q = (q0, q1, q2, q3), scalar first (attitude.h, section 1), row-major,
- *   v_fixed = R v_body:
- *       R = [1-2(q2^2+q3^2)  2(q1q2-q0q3)    2(q1q3+q0q2)
- *            2(q1q2+q0q3)    1-2(q1^2+q3^2)  2(q2q3-q0q1)
- *            2(q1q3-q0q2)    2(q2q3+q0q1)    1-2(q1^2+q2^2)]
- *
- * 2. Angles of a sequence from R
+ * 1. Angles of a sequence from R
  *   Every sequence is the chain R = R_a1(phi1) R_a2(phi2) R_a3(phi3) (kinematics_general.h,
  *   section 1; theta_k = phi_k body-fixed, phi_(4-k) space-fixed). With 0-based axes i = a1,
  *   j = a2, k the remaining axis, e = +1 when (i, j, k) is cyclic, -1 otherwise:
@@ -23,19 +17,19 @@
  *   Every attitude has two angle sets: (phi1, phi2, phi3) and (phi1 + pi, pi - phi2, phi3 + pi)
  *   (Tait-Bryan) or (phi1 + pi, -phi2, phi3 + pi) (proper Euler).
  *
- * 3. Continuity (ak_attitude_angles with a previous angle set)
+ * 2. Continuity (ak_attitude_angles with a previous angle set)
  *   Of the two angle sets, each angle is first shifted by the multiple of 2 pi that brings it
  *   nearest to the previous value ("unwrapped"); the set nearer to the previous one (sum of
  *   squared differences) is taken. So theta1 and theta3 run on across +-pi, and a trajectory that
  *   passes through the singular angle comes out on the far side with theta2 beyond +-pi/2
  *   (Tait-Bryan) or below 0 (proper Euler) instead of bouncing back with a jump of pi in theta1
- *   and theta3. Without a previous set (initialization) the principal set of section 2 is taken.
+ *   and theta3. Without a previous set (initialization) the principal set of section 1 is taken.
  *   At the singular configuration (distance < AK_ATTITUDE_SINGULAR_DISTANCE) only theta1 +- theta3
  *   is defined. Choice: theta1 keeps its previous value and theta3 takes the rest: for chain
  *   rotation phi_held (phi1 body-fixed, phi3 space-fixed) held, the other end is read from
  *   R_a1(phi1)^T R = R_a2(phi2) R_a3(phi3) (row a2 holds cos, sin of phi3) or
  *   R R_a3(phi3)^T = R_a1(phi1) R_a2(phi2) (column a2 holds cos, sin of phi1). Every output stays
- *   finite there. Above that distance the formulas of section 2 lose about
+ *   finite there. Above that distance the formulas of section 1 lose about
  *   rounding(R) / distance in theta1 and theta3 (the attitude itself is exact).
  */
 #ifndef ANGULAR_KINEMATICS_ATTITUDE_ANGLES_H
@@ -45,13 +39,10 @@
 
 #include "sequences.h"
 
-/* Below this singularity distance theta1 is held (section 3): sqrt(DBL_EPSILON). */
+/* Below this singularity distance theta1 is held (section 2): sqrt(DBL_EPSILON). */
 #define AK_ATTITUDE_SINGULAR_DISTANCE 1.4901161193847656e-08
 
-/* R of a unit q (section 1), row-major. */
-void ak_quat_to_matrix(const double q[4], double R[3][3]);
-
-/* Angles of `sequence` for the attitude R (sections 2, 3). previous: the last angle set of the
+/* Angles of `sequence` for the attitude R (sections 1, 2). previous: the last angle set of the
  * same trajectory, or NULL for the principal set. Writes theta and the singularity distance;
  * returns true when the singular choice was taken. */
 bool ak_attitude_angles(const ak_sequence *sequence, double R[3][3],

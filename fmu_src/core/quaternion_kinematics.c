@@ -5,8 +5,6 @@
 #include <math.h>
 #include <stdbool.h>
 
-#include "attitude_angles.h"
-
 /* vec(u* x) = b - c and vec(x u*) = b + c, with b = u0 x_v - x0 u_v and c = u_v x x_v; times 2. */
 static void twice_products(const double u[4], const double x[4], double body[3],
                            double fixed[3]) {
@@ -18,6 +16,22 @@ static void twice_products(const double u[4], const double x[4], double body[3],
         body[k] = 2.0 * (b[k] - c[k]);
         fixed[k] = 2.0 * (b[k] + c[k]);
     }
+}
+
+/* R of u (the header's form for any length: the rounding of |u| does not enter). */
+static void rotation_matrix(const double u[4], double R[3][3]) {
+    const double w = u[0], x = u[1], y = u[2], z = u[3];
+    const double ww = w * w, xx = x * x, yy = y * y, zz = z * z;
+    const double inverse = 1.0 / ((ww + xx) + (yy + zz)), twice = 2.0 * inverse;
+    R[0][0] = ((ww + xx) - (yy + zz)) * inverse;
+    R[0][1] = twice * (x * y - w * z);
+    R[0][2] = twice * (x * z + w * y);
+    R[1][0] = twice * (x * y + w * z);
+    R[1][1] = ((ww + yy) - (xx + zz)) * inverse;
+    R[1][2] = twice * (y * z - w * x);
+    R[2][0] = twice * (x * z - w * y);
+    R[2][1] = twice * (y * z + w * x);
+    R[2][2] = ((ww + zz) - (xx + yy)) * inverse;
 }
 
 /* The largest |q_k|: |q| is computed scaled by it, so that no square overflows or underflows. */
@@ -70,7 +84,7 @@ ak_quaternion_status ak_quaternion_kinematics(const double q[4], const double q_
         finite = finite && out->alpha_body[k] - out->alpha_body[k] == 0.0 &&
                  out->alpha_fixed[k] - out->alpha_fixed[k] == 0.0;
     }
-    ak_quat_to_matrix(u, out->R);
+    rotation_matrix(u, out->R);
     return finite ? AK_QUATERNION_OK : AK_QUATERNION_OVERFLOW;
 }
 
@@ -115,7 +129,8 @@ void ak_quaternion_kinematics_tangent(const double q[4], const double q_dot[4],
         d_out->alpha_body[k] = d_r_body[k] - d_a2 * omega_body[k] - a2 * d_out->omega_body[k];
         d_out->alpha_fixed[k] = d_r_fixed[k] - d_a2 * omega_fixed[k] - a2 * d_out->omega_fixed[k];
     }
-    /* R(u) of attitude_angles.h, section 1, differentiated term by term. */
+    /* R(u) differentiated term by term in its unit form 1 - 2 (y^2 + z^2), ...: for the exact u
+     * and du (u . du = 0) the same as the header's form. */
     const double w = u[0], x = u[1], y = u[2], z = u[3];
     const double dw = du[0], dx = du[1], dy = du[2], dz = du[3];
     d_out->R[0][0] = -4.0 * (y * dy + z * dz);

@@ -21,7 +21,12 @@
  *     alpha_body  = 2 vec(u* r) - 2 a omega_body,  alpha_fixed = 2 vec(r u*) - 2 a omega_fixed.
  * With b = u0 x_v - x0 u_v and c = u_v x x_v for x = p (or r),
  *     vec(u* x) = b - c,  vec(x u*) = b + c.
- * R is R(u) of attitude_angles.h, section 1, and q_norm = n.
+ * R is the direction cosine matrix of u in the form that holds for any length,
+ *     R = [w^2+x^2-y^2-z^2  2(xy-wz)         2(xz+wy)
+ *          2(xy+wz)         w^2-x^2+y^2-z^2  2(yz-wx)
+ *          2(xz-wy)         2(yz+wx)         w^2-x^2-y^2+z^2] / (w^2+x^2+y^2+z^2),  u = (w, x, y, z),
+ * so that the rounding of u's length (a few units of roundoff) does not enter R as it would
+ * through 1 - 2 (y^2 + z^2); and q_norm = n.
  *
  * Norm. n = m sqrt(sum (q_k / m)^2) with m the largest |q_k|: no square of a component overflows
  * or underflows. q = 0 has no attitude, and below the smallest normal double (m < DBL_MIN) 1 / n
@@ -30,7 +35,8 @@
  * Accuracy. u, p and r are q, q_dot, q_ddot times one rounded 1 / n: each within about 2 units of
  * roundoff. Each component of vec(u* x) is a sum of four products of size at most |u||x|, so
  * omega is within a few units of roundoff of 2 |q_dot| / |q|, and alpha of 2 |q_ddot| / |q| +
- * 4 |q . q_dot| |q_dot| / |q|^3, the sizes of the terms that make them. */
+ * 4 |q_dot|^2 / |q|^2 (a = u . p may cancel: its error is of the size of |p|, not of a); R within
+ * a few units of roundoff of 1. */
 #ifndef AK_QUATERNION_KINEMATICS_H
 #define AK_QUATERNION_KINEMATICS_H
 

@@ -48,7 +48,7 @@ static void principal(const chain_axes *c, double R[3][3], double phi[3], double
 }
 
 /* The angle x of R_a(x) from its row (or column) `line` != a of a matrix M that has the factor
- * R_a(x) on its right (row) or left (column); see attitude_angles.h, section 3. */
+ * R_a(x) on its right (row) or left (column); see attitude_angles.h, section 2. */
 static double angle_from_row(int a, int line, double M[3][3]) {
     const int next = (a + 1) % 3, after = (a + 2) % 3;
     return line == next ? ak_atan2(-M[line][after], M[line][line])

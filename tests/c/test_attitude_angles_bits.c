@@ -88,7 +88,7 @@ static void compare(const ak_sequence *sequence, double R[3][3], const double pr
     }
 }
 
-/* The other angle set of the principal set p (theta order, attitude_angles.h, section 2). */
+/* The other angle set of the principal set p (theta order, attitude_angles.h, section 1). */
 static void other_set(const ak_sequence *sequence, const double p[3], double o[3]) {
     o[0] = p[0] + PI;
     o[1] = sequence->proper_euler ? -p[1] : PI - p[1];

@@ -216,8 +216,8 @@ static void tangent(void) {
             const double difference = (u[i] - w[i]) / (2.0 * h);
             const double error = fabs(t[i] - difference) / (1.0 + fabs(difference));
             worst = fmax(worst, error);
-            ak_check(error < 1e-6, "trial %d: tangent of output %zu: %.17g, differences %.17g",
-                     trial, i, t[i], difference);
+            ak_check(error < 1e-6, "trial %d: tangent of output %d: %.17g, differences %.17g",
+                     trial, (int)i, t[i], difference);
         }
     }
     printf("tangent: largest difference to central differences %.3g\n", worst);
