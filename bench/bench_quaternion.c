@@ -45,7 +45,8 @@
 #define PASSTHROUGH_GUID "{5b2d7a40-3c1e-4f8a-9d6b-0e4f2a7c9b13}"
 
 enum { ROWS = 256, N_IN = 12, N_OUT = 32, MAX_REPEATS = 51 };
-_Static_assert((int)N_IN == (int)QK_N_INPUTS && (int)N_OUT == (int)QK_N_OUTPUTS, "the model's counts");
+_Static_assert((int)N_IN == (int)QK_N_INPUTS && (int)N_OUT == (int)QK_N_OUTPUTS,
+               "the model's counts");
 static double rows[ROWS][N_IN];
 static volatile double sink;
 
@@ -196,7 +197,8 @@ static void load(fmu *f, const char *path, fmi2ValueReference first_output) {
     f->get_real = FUNCTION(fmi2GetRealTYPE, library, "fmi2GetReal");
     f->do_step = FUNCTION(fmi2DoStepTYPE, library, "fmi2DoStep");
     f->free_instance = FUNCTION(fmi2FreeInstanceTYPE, library, "fmi2FreeInstance");
-    fmi2SetupExperimentTYPE *setup = FUNCTION(fmi2SetupExperimentTYPE, library, "fmi2SetupExperiment");
+    fmi2SetupExperimentTYPE *setup =
+        FUNCTION(fmi2SetupExperimentTYPE, library, "fmi2SetupExperiment");
     fmi2EnterInitializationModeTYPE *enter =
         FUNCTION(fmi2EnterInitializationModeTYPE, library, "fmi2EnterInitializationMode");
     fmi2ExitInitializationModeTYPE *exit_mode =

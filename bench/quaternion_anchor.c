@@ -12,7 +12,8 @@
  *   R = R(q / |q|); body123 (R = R_x(theta1) R_y(theta2) R_z(theta3)):
  *   theta1 = atan2(-R23, R33), theta2 = atan2(R13, sqrt(R11^2 + R12^2)), theta3 = atan2(-R12, R11);
  *   omega_body = W(theta) theta_dot with W's inverse by hand (c2 = cos theta2, ...):
- *   theta_dot1 = (w1 c3 - w2 s3) / c2,  theta_dot2 = w1 s3 + w2 c3,  theta_dot3 = w3 - s2 theta_dot1,
+ *   theta_dot1 = (w1 c3 - w2 s3) / c2,  theta_dot2 = w1 s3 + w2 c3,
+ *   theta_dot3 = w3 - s2 theta_dot1,
  *   and its time derivative:
  *   theta_ddot1 = (a1 c3 - a2 s3 - theta_dot2 theta_dot3 + s2 theta_dot1 theta_dot2) / c2,
  *   theta_ddot2 = a1 s3 + a2 c3 + c2 theta_dot1 theta_dot3,
@@ -39,7 +40,8 @@ void ak_anchor_quaternion(const double in[12], double out[32]) {
            *theta_ddot = &out[28];
     const double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
     const double inverse_n2 = 1.0 / n2;
-    const double a2 = 2.0 * (q[0] * qd[0] + q[1] * qd[1] + q[2] * qd[2] + q[3] * qd[3]) * inverse_n2;
+    const double q_dot_q = q[0] * qd[0] + q[1] * qd[1] + q[2] * qd[2] + q[3] * qd[3];
+    const double a2 = 2.0 * q_dot_q * inverse_n2;
     double wb[3], wf[3], ab[3], af[3];
     twice_vec_products(q, qd, wb, wf);
     twice_vec_products(q, qdd, ab, af);
