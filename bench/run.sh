@@ -15,6 +15,9 @@
 #      copies in bench/attitude_anchor.c, over the largest step count of --steps;
 #   5b. PointKinematics (bench/bench_point.c): set 24 + doStep + get 18, FMI 2, vs. the
 #      pass-through's cycle with the same counts plus the hand-written formula;
+#   5c. QuaternionKinematics (bench/bench_quaternion.c): set 12 + doStep + get 32, FMI 2, vs. the
+#      pass-through's cycle with the same counts plus the hand-written body123 formula, on random
+#      and smooth rows of its own (q, q_dot, q_ddot);
 #   6. the project's sincos beside the C library's sin and cos (bench/bench_sincos.c), and three
 #      atan2 at once (ak_atan2_three) beside three ak_atan2 and three C library atan2
 #      (bench/bench_atan2.c);
@@ -199,6 +202,16 @@ callgrind_table() {
   fi
   instruction_table "AttitudePropagator against the bare quaternion update:" \
     "anchor: bare quaternion update|$(instructions_per_step "${ap[@]}" bare)" "${rows[@]}"
+  local qk=(build/bench/bench_quaternion build/fmu/binaries/linux64/QuaternionKinematics.so
+    "$pt_so" STEPS 1) kind
+  for kind in "${kinds[@]}"; do
+    echo
+    instruction_table "QuaternionKinematics, $kind rows, against its hand-written body123 formula:" \
+      "anchor: hand-written body123 formula|$(instructions_per_step "${qk[@]}" "$kind" anchor)" \
+      "pass-through FMU, FMI 2: set 12 + doStep + get 32|$(instructions_per_step "${qk[@]}" \
+        "$kind" passthrough)" \
+      "FMI 2: set 12 + doStep + get 32|$(instructions_per_step "${qk[@]}" "$kind" quaternion)"
+  done
 }
 
 # Each sequence's FMI 2 cycle against its own anchor (bench/anchors_sequences.c), and the cycle
@@ -240,14 +253,15 @@ goals_table() {
   awk -v kinds="${kinds[*]}" '
     { ratio[$1, $2] = $3; beside[$1, $2] = $4; ns[$1, $2] = $5 }
     END {
-      n = split("ak-fmi2 ak-fmi3 ap-fmi2-q ap-fmi3-q ap-fmi2-theta ap-fmi3-theta", keys, " ")
-      split("1.3 1.05 1.5 1.5 1.3 1.3", limits, " ")
+      n = split("ak-fmi2 ak-fmi3 ap-fmi2-q ap-fmi3-q ap-fmi2-theta ap-fmi3-theta qk-fmi2", keys, " ")
+      split("1.3 1.05 1.5 1.5 1.3 1.3 1.3", limits, " ")
       goal["ak-fmi2"] = "AngularKinematics body123 FMI 2 cycle / hand-written 1-2-3 formula"
       goal["ak-fmi3"] = "AngularKinematics FMI 3 cycle (one set of the 3 arrays) / FMI 2 cycle"
       goal["ap-fmi2-q"] = "AttitudePropagator FMI 2, get q / bare quaternion update"
       goal["ap-fmi3-q"] = "AttitudePropagator FMI 3, get q / bare quaternion update"
       goal["ap-fmi2-theta"] = "AttitudePropagator FMI 2, get q, theta / update + angles"
       goal["ap-fmi3-theta"] = "AttitudePropagator FMI 3, get q, theta / update + angles"
+      goal["qk-fmi2"] = "QuaternionKinematics FMI 2 cycle / (pass-through + body123 formula)"
       m = split(kinds, kind, " ")
       printf "| goal | at most |"
       for (j = 1; j <= m; j++) printf " %s |", kind[j]
@@ -320,6 +334,14 @@ goals_table() {
   echo
   build/bench/bench_point build/fmu/binaries/linux64/PointKinematics.so \
     build/passthrough/PassThrough.so "${steps##*,}" "$repeats"
+  echo
+  # QuaternionKinematics (bench/bench_quaternion.c): the same, with its body123 formula
+  # (bench/quaternion_anchor.c), on its random and smooth rows.
+  echo "### QuaternionKinematics"
+  echo
+  AK_BENCH_FIGURES=$figures build/bench/bench_quaternion \
+    build/fmu/binaries/linux64/QuaternionKinematics.so build/passthrough/PassThrough.so \
+    "${steps##*,}" "$repeats" "$([ ${#kinds[@]} -eq 1 ] && echo "${kinds[0]}" || echo both)"
   echo
   # The project's sincos beside the C library's (bench/bench_sincos.c).
   build/bench/bench_sincos --calls "$(awk -v c="$calls" 'BEGIN { print (c < 4096 ? 4096 : 40 * c) }')" --repeats "$repeats"

@@ -3,11 +3,18 @@
 
 #include <float.h>
 #include <math.h>
-#include <stdbool.h>
+
+/* Inlined into its calls (the compiler would rather call one copy): the products stay in
+ * registers. */
+#if defined(__GNUC__)
+#define AK_QUATERNION_INLINE __attribute__((always_inline)) inline
+#else
+#define AK_QUATERNION_INLINE inline
+#endif
 
 /* vec(u* x) = b - c and vec(x u*) = b + c, with b = u0 x_v - x0 u_v and c = u_v x x_v; times 2. */
-static void twice_products(const double u[4], const double x[4], double body[3],
-                           double fixed[3]) {
+static AK_QUATERNION_INLINE void twice_products(const double u[4], const double x[4],
+                                                double body[3], double fixed[3]) {
     const double b[3] = {u[0] * x[1] - x[0] * u[1], u[0] * x[2] - x[0] * u[2],
                          u[0] * x[3] - x[0] * u[3]};
     const double c[3] = {u[2] * x[3] - u[3] * x[2], u[3] * x[1] - u[1] * x[3],
@@ -36,9 +43,11 @@ static void rotation_matrix(const double u[4], double R[3][3]) {
 
 /* The largest |q_k|: |q| is computed scaled by it, so that no square overflows or underflows. */
 static double largest_component(const double q[4]) {
+    /* fmax's value without its call: largest is never NaN, and a NaN |q_k| is skipped by both. */
     double largest = 0.0;
     for (int k = 0; k < 4; k++) {
-        largest = fmax(largest, fabs(q[k]));
+        const double size = fabs(q[k]);
+        largest = size > largest ? size : largest;
     }
     return largest;
 }
@@ -76,16 +85,17 @@ ak_quaternion_status ak_quaternion_kinematics(const double q[4], const double q_
     double r_body[3], r_fixed[3];
     twice_products(u, p, out->omega_body, out->omega_fixed);
     twice_products(u, r, r_body, r_fixed);
-    bool finite = n <= DBL_MAX;
+    /* x - x is 0 for a finite x, NaN otherwise: summed, one test for all, without a branch. */
+    double zero = 0.0;
     for (int k = 0; k < 3; k++) {
-        out->alpha_body[k] = r_body[k] - a2 * out->omega_body[k];
-        out->alpha_fixed[k] = r_fixed[k] - a2 * out->omega_fixed[k];
-        /* x - x is 0 for a finite x, NaN otherwise: one test for all. */
-        finite = finite && out->alpha_body[k] - out->alpha_body[k] == 0.0 &&
-                 out->alpha_fixed[k] - out->alpha_fixed[k] == 0.0;
+        const double body = r_body[k] - a2 * out->omega_body[k];
+        const double fixed = r_fixed[k] - a2 * out->omega_fixed[k];
+        out->alpha_body[k] = body;
+        out->alpha_fixed[k] = fixed;
+        zero += (body - body) + (fixed - fixed);
     }
     rotation_matrix(u, out->R);
-    return finite ? AK_QUATERNION_OK : AK_QUATERNION_OVERFLOW;
+    return n <= DBL_MAX && zero == 0.0 ? AK_QUATERNION_OK : AK_QUATERNION_OVERFLOW;
 }
 
 /* body := 2 vec(a* x + b* y), fixed := 2 vec(x a* + y b*): the change of twice_products(u, x)

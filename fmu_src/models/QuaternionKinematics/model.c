@@ -32,9 +32,14 @@ _Static_assert(sizeof(ak_quaternion_outputs) == 22 * sizeof(double), "no padding
 static ak_eval_status evaluate(ak_model_data *data) {
     double *v = data->values;
     const double *q = &v[QK_VR_Q];
-    ak_quaternion_outputs out;
+    /* The core writes the outputs straight into the value array (no copy of a fresh struct, whose
+     * wide loads would wait for its narrow stores); the last valid ones are kept aside (old
+     * values: no wait) and put back when one overflowed. */
+    ak_quaternion_outputs kept;
+    ak_quaternion_outputs *const out = (ak_quaternion_outputs *)&v[QK_VR_OMEGA_FIXED];
+    memcpy(&kept, out, sizeof kept);
     const ak_quaternion_status status =
-        ak_quaternion_kinematics(q, &v[QK_VR_Q_DOT], &v[QK_VR_Q_DDOT], &out);
+        ak_quaternion_kinematics(q, &v[QK_VR_Q_DOT], &v[QK_VR_Q_DDOT], out);
     if (status == AK_QUATERNION_NOT_ATTITUDE) {
         ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
                      "%s: q = (%g, %g, %g, %g) is not an attitude: |q| is 0 or below the "
@@ -43,7 +48,7 @@ static ak_eval_status evaluate(ak_model_data *data) {
         return AK_EVAL_FAILED;
     }
     if (status == AK_QUATERNION_OVERFLOW) {
-        const double *o = (const double *)&out;
+        const double *o = (const double *)out;
         int k = 0;
         while (o[k] - o[k] == 0.0) {
             k++;
@@ -52,20 +57,23 @@ static ak_eval_status evaluate(ak_model_data *data) {
                      "%s: %s = %g overflows: |q| = %g, |q_dot| / |q| or |q_ddot| / |q| is too "
                      "large; the outputs keep their last valid values",
                      AK_MODEL.model_identifier, QK_VARIABLES[QK_VR_OMEGA_FIXED + k].name, o[k],
-                     out.q_norm);
+                     out->q_norm);
+        memcpy(out, &kept, sizeof kept);
         return AK_EVAL_FAILED;
     }
-    memcpy(&v[QK_VR_OMEGA_FIXED], &out, sizeof out);
 
     const ak_sequence *sequence = &AK_SEQUENCES[(int)v[QK_VR_SEQUENCE] - 1];
     double distance;
-    (void)ak_attitude_angles(sequence, out.R, NULL, &v[QK_VR_THETA], &distance);
+    (void)ak_attitude_angles(sequence, out->R, NULL, &v[QK_VR_THETA], &distance);
     const double tolerance = v[QK_VR_TOLERANCE];
     double alpha_fixed[3], alpha_body[3]; /* the rates' own rotation of alpha: out's are kept */
     const ak_rates_status rates = ak_general_euler_rates(
-        sequence, AK_FRAME_BODY, &v[QK_VR_THETA], out.omega_body, out.alpha_body, tolerance,
+        sequence, AK_FRAME_BODY, &v[QK_VR_THETA], out->omega_body, out->alpha_body, tolerance,
         &v[QK_VR_THETA_DOT], &v[QK_VR_THETA_DDOT], alpha_fixed, alpha_body, &distance);
     v[QK_VR_SINGULARITY_DISTANCE] = distance;
+    if (rates == AK_RATES_OK) {
+        return AK_EVAL_OK;
+    }
     const char *singular_at = sequence->proper_euler ? "0 or pi" : "+-pi/2";
     if (rates == AK_RATES_SINGULAR || rates == AK_RATES_OVERFLOW) {
         ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
@@ -77,16 +85,14 @@ static ak_eval_status evaluate(ak_model_data *data) {
                      sequence->name, singular_at, distance);
         return AK_EVAL_FAILED;
     }
-    if (rates == AK_RATES_NEAR_SINGULAR) {
-        ak_model_log(data, AK_LOG_WARNING, AK_STATUS_WARNING,
-                     "%s: theta[2] = %.17g is near the singular configuration of %s (theta[2] = "
-                     "%s): singularity_distance = %g < tolerance = %g; theta_dot[1] and "
-                     "theta_dot[3] grow as 1/singularity_distance",
-                     AK_MODEL.model_identifier, v[QK_VR_THETA + 1], sequence->name, singular_at,
-                     distance, tolerance);
-        return AK_EVAL_WARNING;
-    }
-    return AK_EVAL_OK;
+    /* AK_RATES_NEAR_SINGULAR */
+    ak_model_log(data, AK_LOG_WARNING, AK_STATUS_WARNING,
+                 "%s: theta[2] = %.17g is near the singular configuration of %s (theta[2] = "
+                 "%s): singularity_distance = %g < tolerance = %g; theta_dot[1] and "
+                 "theta_dot[3] grow as 1/singularity_distance",
+                 AK_MODEL.model_identifier, v[QK_VR_THETA + 1], sequence->name, singular_at,
+                 distance, tolerance);
+    return AK_EVAL_WARNING;
 }
 
 /* inverse := M^-1 (adjugate over determinant). */
