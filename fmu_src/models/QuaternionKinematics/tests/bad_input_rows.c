@@ -73,8 +73,8 @@ const ak_bad_call AK_MODEL_BAD_CALLS[] = {
     /* --- a step that failed at the singular configuration (q = (0.3, 0.5, 0.3, 0.5), body123) - */
     {STEP_FAILED, "fmi2GetReal(c, {37}, 1, v)", AK_OP_GET_REAL,
      {.vr = (const fmi2ValueReference[]){37}, .nvr = 1, .values = (fmi2Real[1]){0}}, fmi2Discard,
-     "QuaternionKinematics: theta[2] = 1.5707963267948963 is at the singular configuration of "
-     "body123 (theta[2] = +-pi/2): singularity_distance = 2.83277e-16; theta_dot and theta_ddot "
+     "QuaternionKinematics: theta[2] = 1.5707963267948966 is at the singular configuration of "
+     "body123 (theta[2] = +-pi/2): singularity_distance = 6.12323e-17; theta_dot and theta_ddot "
      "are not defined there and keep their last valid values", false},
     {STEP_FAILED, "fmi2DoStep(c, 1, 0.5, fmi2True)", AK_OP_DO_STEP,
      {.real = {1.0, 0.5}, .flag = {fmi2True}}, fmi2Error, "fmi2DoStep: illegal call in state StepFailed", false},
