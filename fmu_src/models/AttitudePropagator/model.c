@@ -119,31 +119,39 @@ static ak_eval_status evaluate(ak_model_data *data) {
 
 /* Lazy angles, bit-identical to angles computed at every communication point. The angles
  * unwrap to the set nearest the last one computed, so computed from an older set they could
- * differ; they do not while every angle moved by less than 1 rad since: each candidate set
- * other than the continued one is at least pi - 1 away in two components (core/attitude.h,
- * sections 5, 6), so the nearest is the continued one, which the computation at every point
- * would also have reached (unwrap and the choice of set depend on the reference only through
- * that). Along a path of rotation angle p from an attitude at singularity distance D, the
- * distance stays at least D - p (it moves by at most the rotation angle) and each angle moves at
- * a rate of at most |omega| / d (a row of W^-1 is a cross product of two unit axes over det W,
- * |det W| = d): by at most the integral of dp / (D - p), ln(D / (D - p)), below 1 while
- * p <= 0.6 D (ln 2.5 = 0.92), and d stays above 0.4 D. A step's rotation angle is at most
- * pi |q_new - q_old| (2-norm; |q_new - q_old| = 2 sin(angle / 4)), taken with the 1-norm,
- * which is larger and needs no square root. */
-static const double ANGLES_PATH_FRACTION = 0.6;
-static const double PI = 3.14159265358979323846;
+ * differ; they do not while theta1 and theta3 moved by at most L = 1.39 rad since and theta2 by
+ * at most p <= 0.75: the other candidate set is pi away from the continued one in theta1 and
+ * theta3 (core/attitude.h, sections 5, 6), so at squared distance at least 2 (pi - L)^2 = 6.2
+ * from the last set, above the continued one's 2 L^2 + p^2 = 4.4, and each angle unwraps to
+ * the continued one's turn (L < pi): the nearest is the continued one, which the computation at
+ * every point would also have reached (unwrap and the choice of set depend on the reference only
+ * through that). Along a path of rotation angle p from an attitude at singularity distance D, the
+ * distance stays at least D - p (it moves by at most the rotation angle), theta2 moves at a rate
+ * of at most |omega| (a component of omega along a unit axis) and theta1, theta3 at most |omega|
+ * / d (a row of W^-1 is a cross product of two unit axes over det W, |det W| = d): by at most
+ * the integral of dp / (D - p), ln(D / (D - p)), at most ln 4 = 1.39 while p <= 0.75 D (the
+ * margin of L to pi/2 - p^2 / (4 pi) = 1.53, where the squared distances meet, covers rounding),
+ * and d stays above D / 4. A step's rotation angle is 4 asin(x), x = |q_new - q_old| / 2
+ * (2-norm), at most 4 tan(asin x) = 4 x / sqrt(1 - x^2): within 1 + x^2 / 3 of it for a small
+ * step, where pi |q_new - q_old| with the 1-norm (the bound before) was up to 2 pi / 2 = 3.1
+ * times too large and made the angles be computed three times as often on a smooth trajectory. */
+static const double ANGLES_PATH_FRACTION = 0.75;
+static const double TWO_PI = 6.28318530717958647692;
 
 /* Before the state moves from v[q] to q_new: computes the angles at v[q] when a catch-up from
  * the last computed ones could differ after this step, and adds the step to the path. */
 static void step_angles(ak_model_data *data, const double q_new[4]) {
     double *v = data->values;
-    double moved = 0.0;
+    double squared = 0.0; /* |q_new - q_old|^2 = 4 x^2 */
     for (int k = 0; k < 4; k++) {
-        moved += fabs(q_new[k] - v[AP_VR_Q + k]);
+        squared += (q_new[k] - v[AP_VR_Q + k]) * (q_new[k] - v[AP_VR_Q + k]);
     }
-    const double rotation = PI * moved;
+    /* 4 x / sqrt(1 - x^2) = 2 sqrt(4 x^2 / (1 - x^2)); past x^2 = 3/4 it exceeds 2 pi, the
+     * largest rotation, which is taken instead (finite, as the path must stay). */
+    const double rotation =
+        squared < 3.0 ? 2.0 * sqrt(squared / (1.0 - 0.25 * squared)) : TWO_PI;
     double path = v[AP_VR_ANGLES_PATH] + rotation;
-    /* D above 5 singular distances: d stays above 2 of them, off the singular choice. */
+    /* D above 5 singular distances: d stays above 1.25 of them, off the singular choice. */
     const double distance = v[AP_VR_SINGULARITY_DISTANCE];
     if (v[AP_VR_ANGLES_AGE] >= 1.0 &&
         !(path <= ANGLES_PATH_FRACTION * distance &&
