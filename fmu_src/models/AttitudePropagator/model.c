@@ -131,25 +131,23 @@ static ak_eval_status evaluate(ak_model_data *data) {
  * / d (a row of W^-1 is a cross product of two unit axes over det W, |det W| = d): by at most
  * the integral of dp / (D - p), ln(D / (D - p)), at most ln 4 = 1.39 while p <= 0.75 D (the
  * margin of L to pi/2 - p^2 / (4 pi) = 1.53, where the squared distances meet, covers rounding),
- * and d stays above D / 4. A step's rotation angle is 4 asin(x), x = |q_new - q_old| / 2
- * (2-norm), at most 4 tan(asin x) = 4 x / sqrt(1 - x^2): within 1 + x^2 / 3 of it for a small
- * step, where pi |q_new - q_old| with the 1-norm (the bound before) was up to 2 pi / 2 = 3.1
- * times too large and made the angles be computed three times as often on a smooth trajectory. */
+ * and d stays above D / 4. A step's rotation angle is at most pi |q_new - q_old| (2-norm;
+ * |q_new - q_old| = 2 sin(angle / 4)), taken with the 1-norm, which is larger and needs no square
+ * root (the sum that angles_path, vr 60, holds): a square root and a division here (a bound up
+ * to 3 times tighter) lengthened the chain the step's branch waits for, and cost more time than
+ * the angles they saved on random rows. */
 static const double ANGLES_PATH_FRACTION = 0.75;
-static const double TWO_PI = 6.28318530717958647692;
+static const double PI = 3.14159265358979323846;
 
 /* Before the state moves from v[q] to q_new: computes the angles at v[q] when a catch-up from
  * the last computed ones could differ after this step, and adds the step to the path. */
 static void step_angles(ak_model_data *data, const double q_new[4]) {
     double *v = data->values;
-    double squared = 0.0; /* |q_new - q_old|^2 = 4 x^2 */
+    double moved = 0.0;
     for (int k = 0; k < 4; k++) {
-        squared += (q_new[k] - v[AP_VR_Q + k]) * (q_new[k] - v[AP_VR_Q + k]);
+        moved += fabs(q_new[k] - v[AP_VR_Q + k]);
     }
-    /* 4 x / sqrt(1 - x^2) = 2 sqrt(4 x^2 / (1 - x^2)); past x^2 = 3/4 it exceeds 2 pi, the
-     * largest rotation, which is taken instead (finite, as the path must stay). */
-    const double rotation =
-        squared < 3.0 ? 2.0 * sqrt(squared / (1.0 - 0.25 * squared)) : TWO_PI;
+    const double rotation = PI * moved;
     double path = v[AP_VR_ANGLES_PATH] + rotation;
     /* D above 5 singular distances: d stays above 1.25 of them, off the singular choice. */
     const double distance = v[AP_VR_SINGULARITY_DISTANCE];
