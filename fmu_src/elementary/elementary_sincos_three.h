@@ -2,7 +2,8 @@
  * operations as ak_sincos's usual paths (elementary.h), without a branch per angle. Random
  * angles make ak_sincos's branches (no reduction or not, the quadrant) mispredict; here the
  * three angles run side by side, the reduction's result or x itself and the quadrant chosen by
- * bit masks, and one branch sends the rare angles to ak_sincos. */
+ * bit masks, and one branch sends the rare angles to ak_sincos. With GNU C (gcc, clang) as two
+ * pairs of doubles, each operation on both lanes (SSE2, NEON). */
 #ifndef ANGULAR_KINEMATICS_ELEMENTARY_SINCOS_THREE_H
 #define ANGULAR_KINEMATICS_ELEMENTARY_SINCOS_THREE_H
 
