@@ -87,8 +87,12 @@ static AK_ELEMENTARY_INLINE ak_sincos_bits ak_sincos_pair_usual(ak_sincos_pair x
     const ak_sincos_bits sr = (ak_sincos_bits)ak_sin_kernel_pair(hi, lo, zh);
     const ak_sincos_bits cr = (ak_sincos_bits)ak_cos_kernel_pair(hi, lo, zh, zl);
     const ak_sincos_bits swap = -(n & 1u);
-    *s = (ak_sincos_pair)(((sr & ~swap) | (cr & swap)) ^ ((n & 2u) << 62));
-    *c = (ak_sincos_pair)(((cr & ~swap) | (sr & swap)) ^ (((n + 1u) & 2u) << 62));
+    /* sin flips its sign in quadrants 2, 3: -(n & 2) is 0 or all ones but the last bit (not the
+     * shift (n & 2) << 62: gcc -fanalyzer takes a vector's lane count for its width); cos flips
+     * in 1, 2: where sin does, unless n is odd. */
+    const ak_sincos_bits flip_s = -(n & 2u) & sign_bit;
+    *s = (ak_sincos_pair)(((sr & ~swap) | (cr & swap)) ^ flip_s);
+    *c = (ak_sincos_pair)(((cr & ~swap) | (sr & swap)) ^ (flip_s ^ (swap & sign_bit)));
     return usual;
 }
 
