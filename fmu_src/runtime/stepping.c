@@ -110,7 +110,8 @@ static ak_status step_evaluating(ak_instance *instance, const char *function, do
         stepped = AK_MODEL.step(&instance->data, h); /* failing, it changed nothing */
         ak_instance_inputs_changed(instance);
     }
-    if (stepped != AK_EVAL_FAILED && !advance_inputs(instance, function, h)) {
+    if (stepped != AK_EVAL_FAILED && instance->data.any_input_derivative &&
+        !advance_inputs(instance, function, h)) { /* held inputs: no call, as ak_do_step */
         if (moves) {
             memcpy(instance->data.values, saved_values, n_values); /* the states moved */
         }

@@ -268,13 +268,15 @@ static void keep_get(ak_instance *instance, const unsigned int vr[], size_t nvr)
 
 ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, double value[]) {
-    /* The usual gets, untraced: consecutive value references of known variables, or the same
-     * few runs as the last get. */
+    /* The usual gets, untraced: consecutive value references of known variables (the count a
+     * constant for the goals' gets, docs/performance.md: four vectors, a quaternion), or the
+     * same few runs as the last get. */
     ak_status status;
     const bool untraced = ak_call_passes(instance, call) && vr != NULL && value != NULL;
     if (untraced && (nvr == USUAL_RUN ? get_run(instance, vr, USUAL_RUN, value, &status)
-                                      : get_run(instance, vr, nvr, value, &status) ||
-                                            get_kept(instance, vr, nvr, value, &status))) {
+                     : (nvr == 4 ? get_run(instance, vr, 4, value, &status)
+                                 : get_run(instance, vr, nvr, value, &status)) ||
+                           get_kept(instance, vr, nvr, value, &status))) {
         return status;
     }
     status = ak_get_values(instance, call, vr, nvr, value, nvr);
@@ -400,12 +402,14 @@ static AK_ALWAYS_INLINE bool inputs_run(const unsigned int vr[], size_t nvr, siz
 ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
                        const unsigned int vr[], size_t nvr, const double value[]) {
     /* The usual sets of an importer: a run of inputs in value-reference order (all of them, or
-     * one vector), finite, untraced, no input derivative to forget. With every input the count
-     * is a constant, so the compiler unrolls the comparison, the check and the copy. */
+     * one vector), finite, untraced, no input derivative to forget. With every input or a
+     * vector the count is a constant, so the compiler unrolls the comparison, the check and the
+     * copy. */
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
     if (ak_call_passes(instance, call) && !instance->data.any_input_derivative && vr != NULL &&
         value != NULL &&
         (nvr == n_inputs ? memcmp(vr, EVERY_VALUE_REFERENCE, n_inputs * sizeof vr[0]) == 0
+         : nvr == 3      ? inputs_run(vr, 3, n_inputs)
                          : inputs_run(vr, nvr, n_inputs)) &&
         ak_store_inputs(instance, vr[0], value, nvr, n_inputs)) {
         return AK_STATUS_OK;

@@ -119,18 +119,24 @@ static ak_eval_status evaluate(ak_model_data *data) {
 
 /* Lazy angles, bit-identical to angles computed at every communication point. The angles
  * unwrap to the set nearest the last one computed, so computed from an older set they could
- * differ; they do not while every angle moved by less than 1 rad since: each candidate set
- * other than the continued one is at least pi - 1 away in two components (core/attitude.h,
- * sections 5, 6), so the nearest is the continued one, which the computation at every point
- * would also have reached (unwrap and the choice of set depend on the reference only through
- * that). Along a path of rotation angle p from an attitude at singularity distance D, the
- * distance stays at least D - p (it moves by at most the rotation angle) and each angle moves at
- * a rate of at most |omega| / d (a row of W^-1 is a cross product of two unit axes over det W,
- * |det W| = d): by at most the integral of dp / (D - p), ln(D / (D - p)), below 1 while
- * p <= 0.6 D (ln 2.5 = 0.92), and d stays above 0.4 D. A step's rotation angle is at most
- * pi |q_new - q_old| (2-norm; |q_new - q_old| = 2 sin(angle / 4)), taken with the 1-norm,
- * which is larger and needs no square root. */
-static const double ANGLES_PATH_FRACTION = 0.6;
+ * differ; they do not while theta1 and theta3 moved by at most L = 1.39 rad since and theta2 by
+ * at most p <= 0.75: the other candidate set is pi away from the continued one in theta1 and
+ * theta3 (core/attitude.h, sections 5, 6), so at squared distance at least 2 (pi - L)^2 = 6.2
+ * from the last set, above the continued one's 2 L^2 + p^2 = 4.4, and each angle unwraps to
+ * the continued one's turn (L < pi): the nearest is the continued one, which the computation at
+ * every point would also have reached (unwrap and the choice of set depend on the reference only
+ * through that). Along a path of rotation angle p from an attitude at singularity distance D, the
+ * distance stays at least D - p (it moves by at most the rotation angle), theta2 moves at a rate
+ * of at most |omega| (a component of omega along a unit axis) and theta1, theta3 at most |omega|
+ * / d (a row of W^-1 is a cross product of two unit axes over det W, |det W| = d): by at most
+ * the integral of dp / (D - p), ln(D / (D - p)), at most ln 4 = 1.39 while p <= 0.75 D (the
+ * margin of L to pi/2 - p^2 / (4 pi) = 1.53, where the squared distances meet, covers rounding),
+ * and d stays above D / 4. A step's rotation angle is at most pi |q_new - q_old| (2-norm;
+ * |q_new - q_old| = 2 sin(angle / 4)), taken with the 1-norm, which is larger and needs no square
+ * root (the sum that angles_path, vr 60, holds): a square root and a division here (a bound up
+ * to 3 times tighter) lengthened the chain the step's branch waits for, and cost more time than
+ * the angles they saved on random rows. */
+static const double ANGLES_PATH_FRACTION = 0.75;
 static const double PI = 3.14159265358979323846;
 
 /* Before the state moves from v[q] to q_new: computes the angles at v[q] when a catch-up from
@@ -143,7 +149,7 @@ static void step_angles(ak_model_data *data, const double q_new[4]) {
     }
     const double rotation = PI * moved;
     double path = v[AP_VR_ANGLES_PATH] + rotation;
-    /* D above 5 singular distances: d stays above 2 of them, off the singular choice. */
+    /* D above 5 singular distances: d stays above 1.25 of them, off the singular choice. */
     const double distance = v[AP_VR_SINGULARITY_DISTANCE];
     if (v[AP_VR_ANGLES_AGE] >= 1.0 &&
         !(path <= ANGLES_PATH_FRACTION * distance &&
