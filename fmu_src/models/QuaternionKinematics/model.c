@@ -111,6 +111,13 @@ static void invert(double M[3][3], double inverse[3][3]) {
     }
 }
 
+/* out := M x. */
+static void times(double M[3][3], const double x[3], double out[3]) {
+    for (int i = 0; i < 3; i++) {
+        out[i] = M[i][0] * x[0] + M[i][1] * x[1] + M[i][2] * x[2];
+    }
+}
+
 /* out := A x (rows of A from `row`, columns from `column` of the general Jacobian) */
 static void block_times(double A[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS], int row,
                         int column, const double x[3], double out[3]) {
@@ -144,27 +151,18 @@ static void change(const ak_model_data *data, const double theta[3],
     double *d_theta = &values[QK_VR_THETA], *d_rate = &values[QK_VR_THETA_DOT],
            *d_acceleration = &values[QK_VR_THETA_DDOT];
     double by_theta[3], by_rate[3], rest[3];
-    for (int i = 0; i < 3; i++) {
-        d_theta[i] = W_inverse[i][0] * rotation.omega_body[0] +
-                     W_inverse[i][1] * rotation.omega_body[1] +
-                     W_inverse[i][2] * rotation.omega_body[2];
-    }
+    times(W_inverse, rotation.omega_body, d_theta);
     block_times(full, OMEGA_BODY_ROW, THETA_COLUMN, d_theta, by_theta);
     for (int i = 0; i < 3; i++) {
         rest[i] = d_out.omega_body[i] - by_theta[i];
     }
-    for (int i = 0; i < 3; i++) {
-        d_rate[i] = W_inverse[i][0] * rest[0] + W_inverse[i][1] * rest[1] + W_inverse[i][2] * rest[2];
-    }
+    times(W_inverse, rest, d_rate);
     block_times(full, ALPHA_BODY_ROW, THETA_COLUMN, d_theta, by_theta);
     block_times(full, ALPHA_BODY_ROW, RATE_COLUMN, d_rate, by_rate);
     for (int i = 0; i < 3; i++) {
         rest[i] = d_out.alpha_body[i] - by_theta[i] - by_rate[i];
     }
-    for (int i = 0; i < 3; i++) {
-        d_acceleration[i] = W_inverse[i][0] * rest[0] + W_inverse[i][1] * rest[1] +
-                            W_inverse[i][2] * rest[2];
-    }
+    times(W_inverse, rest, d_acceleration);
     /* singularity_distance = |cos theta[2]| (Tait-Bryan) or |sin theta[2]| (proper Euler). */
     ak_sines sines;
     ak_angle_sines(theta, &sines);
