@@ -81,10 +81,8 @@ function(ak_add_fmu3 model)
   endforeach()
   list(TRANSFORM AK_DOCUMENTATION_FIGURES_${model} PREPEND "${CMAKE_SOURCE_DIR}/"
        OUTPUT_VARIABLE _figures)
-  set(_ls_ref_dir "${_folder}/ls_ref")
-  set(_ls_ref "${_ls_ref_dir}/fmi-ls-manifest.xml" "${_ls_ref_dir}/${model}_in.csv"
-      "${_ls_ref_dir}/${model}_out.csv" "${_ls_ref_dir}/${model}.exp")
   set(_fmu "${AK_DIST_DIR}/fmi3/${model}.fmu")
+  ak_ls_ref_commands("${_package}" "${CMAKE_BINARY_DIR}/fmu3_unreferenced_${model}.fmu")
   add_custom_command(
     OUTPUT "${_fmu}"
     COMMAND ${CMAKE_COMMAND} -E rm -rf "${_package}"
@@ -100,14 +98,13 @@ function(ak_add_fmu3 model)
     COMMAND ${CMAKE_COMMAND} -E copy "$<TARGET_FILE:${_target}>"
             "${_package}/binaries/${FMI3_PLATFORM}/"
     ${_copy_extra}
-    COMMAND ${CMAKE_COMMAND} -E make_directory "${_package}/extra/org.fmi-standard.fmi-ls-ref"
-    COMMAND ${CMAKE_COMMAND} -E copy ${_ls_ref} "${_package}/extra/org.fmi-standard.fmi-ls-ref/"
+    ${AK_LS_REF_COMMANDS}
     COMMAND ${CMAKE_COMMAND} -E make_directory "${AK_DIST_DIR}/fmi3"
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py" "${_package}" "${_fmu}"
     WORKING_DIRECTORY "${CMAKE_BINARY_DIR}"
     DEPENDS ${_target} "${_folder}/modelDescription.xml" "${_folder}/buildDescription.xml"
             "${_folder}/documentation/index.html" ${_figures} "${CMAKE_SOURCE_DIR}/model.png" ${_packaged}
-            ${_extra} ${_ls_ref} "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py"
+            ${_extra} ${AK_LS_REF_WRITERS} "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py"
     COMMENT "Packaging ${_fmu}"
     VERBATIM)
   add_custom_target(fmu3_${model} ALL DEPENDS "${_fmu}")

@@ -1,7 +1,7 @@
 """`python -m codegen new-model NAME --like MODEL`: a new model as a copy of MODEL's folder.
 
-It copies fmu_src/models/MODEL/ (description.py, model.c, the bad-input rows, the reference
-results ls_ref/ and fmi3/ls_ref/, which hold for the copy as long as its code is MODEL's) under
+It copies fmu_src/models/MODEL/ (description.py, model.c, the bad-input rows, which hold for the
+copy as long as its code is MODEL's) under
 the new name, with the name and the C prefix replaced and a new GUID, adds NAME to the model list
 (codegen/project.py: MODELS) and regenerates every generated file. `bash scripts/build.sh` then
 builds dist/NAME.fmu and dist/fmi3/NAME.fmu (docs/contributing.md says what to change next)."""
@@ -60,8 +60,8 @@ def copy_description(source, target, name, like, prefix):
 
 
 def copy_files(source, target, name, like, old_prefix, prefix):
-    """Every other file of the folder (model.c, the bad-input rows, the reference results ls_ref/
-    and fmi3/ls_ref/, the generated files, which codegen then writes anew) with the model's name
+    """Every other file of the folder (model.c, the bad-input rows, the generated files, which
+    codegen then writes anew) with the model's name
     and C prefix replaced, in the file names too."""
     for path in sorted(source.rglob("*")):
         relative = path.relative_to(source)

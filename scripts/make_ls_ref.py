@@ -1,5 +1,4 @@
-"""Writes fmu_src/models/<Model>/ls_ref/ (FMI 2) and fmu_src/models/<Model>/fmi3/ls_ref/ (FMI 3):
-the reference result each FMU carries in extra/org.fmi-standard.fmi-ls-ref/ by the layered
+"""Writes the reference result an FMU carries in extra/org.fmi-standard.fmi-ls-ref/ by the layered
 standard FMI-LS-REF (github.com/modelica/fmi-ls-ref; fmi-ls-version 1.0.0-alpha.1, the version its
 specification names). The manifest fmi-ls-manifest.xml relates each file by its role:
 
@@ -12,11 +11,12 @@ specification names). The manifest fmi-ls-manifest.xml relates each file by its 
     ../../documentation/index.html  document  the FMU's page
 
 The experiment is the cross-check's (scripts/make_cross_check.py), in Co-Simulation with the
-master of examples/cross_check.py. CMake copies the files into the FMU;
-`python examples/ci_check.py --ls-ref FMU` re-simulates an FMU against the files it carries.
+master of examples/cross_check.py, run by fmpy on the FMU as packaged without them: CMake packages
+each FMU, runs this on it and packages it again with the files, so that they are what the
+binary of the build computes, from a clean tree. `python examples/ci_check.py --ls-ref FMU`
+re-simulates an FMU against the files it carries.
 
-    .venv/bin/python scripts/make_ls_ref.py [--dist DIR] [--out DIR]
---out DIR writes DIR/<fmi2|fmi3>/<Model>/ instead (the test compares a fresh run with it)."""
+    .venv/bin/python scripts/make_ls_ref.py FMU FOLDER     (FOLDER is emptied first)"""
 import argparse
 import pathlib
 import shutil
@@ -25,7 +25,7 @@ import sys
 from examples.cross_check import RELATIVE, START, STEP, STOP
 from examples.ls_ref import (DOCUMENT, EXPERIMENT_NAME, EXPERIMENTS_TYPE, LS_DESCRIPTION, LS_NAME,
                              LS_VERSION)
-from scripts.make_cross_check import ROOT, reference_run
+from scripts.make_cross_check import reference_run
 
 MANIFEST = """<?xml version="1.0" encoding="UTF-8"?>
 <fmiReferences
@@ -53,16 +53,9 @@ EXPERIMENTS = """<?xml version="1.0" encoding="UTF-8"?>
 """
 
 
-def model_folder(version, model):
-    """Where a model's reference result is kept: its model folder, FMI 2 or FMI 3 part."""
-    return ROOT / "fmu_src" / "models" / model / ("ls_ref" if version == "fmi2" else "fmi3/ls_ref")
-
-
-def make(fmu, out=None):
+def make(fmu, folder):
     description, write, inputs, outputs = reference_run(fmu, EXPERIMENT_NAME)
     model = description.modelName
-    version = "fmi2" if description.fmiVersion == "2.0" else "fmi3"
-    folder = out / version / model if out is not None else model_folder(version, model)
     shutil.rmtree(folder, ignore_errors=True)
     folder.mkdir(parents=True)
     write(folder / f"{model}_in.csv", *inputs)
@@ -78,17 +71,10 @@ def make(fmu, out=None):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--dist", default=str(ROOT / "dist"))
-    parser.add_argument("--out")
+    parser.add_argument("fmu", help="the FMU (without the files, or they are ignored)")
+    parser.add_argument("folder", help="where to write the four files")
     args = parser.parse_args(argv)
-    dist = pathlib.Path(args.dist)
-    out = pathlib.Path(args.out) if args.out else None
-    fmus = sorted(dist.glob("*.fmu")) + sorted((dist / "fmi3").glob("*.fmu"))
-    if not fmus:
-        print(f"no .fmu in {dist}: build first (bash scripts/build.sh)")
-        return 2
-    for fmu in fmus:
-        print(f"wrote {make(fmu, out).relative_to(out if out is not None else ROOT)}")
+    make(pathlib.Path(args.fmu), pathlib.Path(args.folder))
     return 0
 
 

@@ -1,0 +1,17 @@
+# The reference result an FMU carries (FMI-LS-REF, scripts/make_ls_ref.py), made while packaging
+# from the binary just built: the package is zipped once without it, fmpy runs the experiment on
+# that FMU, and the files land in the package before the final zip. So a clean tree (a new model
+# too) packages its FMUs with results that are what they compute.
+set(AK_LS_REF_WRITERS
+    "${CMAKE_SOURCE_DIR}/scripts/make_ls_ref.py" "${CMAKE_SOURCE_DIR}/scripts/make_cross_check.py"
+    "${CMAKE_SOURCE_DIR}/examples/cross_check.py" "${CMAKE_SOURCE_DIR}/examples/cross_check3.py"
+    "${CMAKE_SOURCE_DIR}/examples/ls_ref.py")
+
+# Sets AK_LS_REF_COMMANDS in the caller: the COMMAND lines that write the files into package.
+function(ak_ls_ref_commands package unreferenced)
+  set(AK_LS_REF_COMMANDS
+      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py" "${package}" "${unreferenced}"
+      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/scripts/make_ls_ref.py" "${unreferenced}"
+              "${package}/extra/org.fmi-standard.fmi-ls-ref"
+      PARENT_SCOPE)
+endfunction()
