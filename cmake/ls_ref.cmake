@@ -11,7 +11,8 @@ set(AK_LS_REF_WRITERS
 function(ak_ls_ref_commands package unreferenced)
   set(AK_LS_REF_COMMANDS
       COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py" "${package}" "${unreferenced}"
-      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/scripts/make_ls_ref.py" "${unreferenced}"
-              "${package}/extra/org.fmi-standard.fmi-ls-ref"
+      # as a module from the checkout: the demo's .venv has no editable install of the project
+      COMMAND ${CMAKE_COMMAND} -E chdir "${CMAKE_SOURCE_DIR}" "${Python3_EXECUTABLE}" -m scripts.make_ls_ref
+              "${unreferenced}" "${package}/extra/org.fmi-standard.fmi-ls-ref"
       PARENT_SCOPE)
 endfunction()

@@ -16,7 +16,7 @@ each FMU, runs this on it and packages it again with the files, so that they are
 binary of the build computes, from a clean tree. `python examples/ci_check.py --ls-ref FMU`
 re-simulates an FMU against the files it carries.
 
-    .venv/bin/python scripts/make_ls_ref.py FMU FOLDER     (FOLDER is emptied first)"""
+    .venv/bin/python -m scripts.make_ls_ref FMU FOLDER     (FOLDER is emptied first)"""
 import argparse
 import pathlib
 import shutil

@@ -77,7 +77,7 @@ def test_carried_files_are_what_the_fmu_computes(tmp_path, version, model):
     """scripts/make_ls_ref.py run on the dist FMU stripped of its files gives them back byte for
     byte: the build made them with the binary it packaged. Four files, named by the model."""
     bare = without_ls_ref(dist_fmu(version, model), tmp_path / "bare.fmu")
-    done = run(ROOT / "scripts" / "make_ls_ref.py", bare, tmp_path / "made")
+    done = run("-m", "scripts.make_ls_ref", bare, tmp_path / "made")
     assert done.returncode == 0, done.stdout + done.stderr
     made = {p.name: p.read_bytes() for p in (tmp_path / "made").iterdir()}
     assert sorted(made) == sorted(["fmi-ls-manifest.xml", f"{model}.exp", f"{model}_in.csv",
