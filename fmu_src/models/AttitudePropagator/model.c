@@ -131,11 +131,12 @@ static ak_eval_status evaluate(ak_model_data *data) {
  * / d (a row of W^-1 is a cross product of two unit axes over det W, |det W| = d): by at most
  * the integral of dp / (D - p), ln(D / (D - p)), at most ln 4 = 1.39 while p <= 0.75 D (the
  * margin of L to pi/2 - p^2 / (4 pi) = 1.53, where the squared distances meet, covers rounding),
- * and d stays above D / 4. A step's rotation angle is at most pi |q_new - q_old| (2-norm;
- * |q_new - q_old| = 2 sin(angle / 4)), taken with the 1-norm, which is larger and needs no square
- * root (the sum that angles_path, vr 60, holds): a square root and a division here (a bound up
- * to 3 times tighter) lengthened the chain the step's branch waits for, and cost more time than
- * the angles they saved on random rows. */
+ * and d stays above D / 4. A step's rotation angle is 4 asin(|q_new - q_old| / 2) (2-norm;
+ * |q_new - q_old| = 2 sin(angle / 4)): at most pi |q_new - q_old|, and at most 2.03 of it while
+ * that is at most 1/2 (asin(x) / x grows: 4 asin(1/4) / (1/2) = 2.0214), taken with the 1-norm,
+ * which is larger and needs no square root (the sum that angles_path, vr 60, holds): a square
+ * root and a division here (a bound up to 3 times tighter) lengthened the chain the step's branch
+ * waits for, and cost more time than the angles they saved on random rows. */
 static const double ANGLES_PATH_FRACTION = 0.75;
 static const double PI = 3.14159265358979323846;
 
@@ -147,7 +148,7 @@ static void step_angles(ak_model_data *data, const double q_new[4]) {
     for (int k = 0; k < 4; k++) {
         moved += fabs(q_new[k] - v[AP_VR_Q + k]);
     }
-    const double rotation = PI * moved;
+    const double rotation = (moved <= 0.5 ? 2.03 : PI) * moved; /* the bounds above */
     double path = v[AP_VR_ANGLES_PATH] + rotation;
     /* D above 5 singular distances: d stays above 1.25 of them, off the singular choice. */
     const double distance = v[AP_VR_SINGULARITY_DISTANCE];
