@@ -118,8 +118,8 @@ VARIABLES = [
                      "that of q)", depends=[]),
     dict(name="angles_path", vr=60, causality="local", type="Angle",
          description="co-simulation: a bound on the rotation angle of the path of q since theta "
-                     "was last computed (the sum over those steps of pi |q_new - q_old|, "
-                     "1-norm)", depends=[]),
+                     "was last computed (the sum over those steps of 2.03 |q_new - q_old|, "
+                     "1-norm, or pi |q_new - q_old| where that is above 1/2)", depends=[]),
     dict(name="q0", vr=44, shape=(4,), causality="parameter", type="Dimensionless",
          start=lambda i: 1.0 if i == 1 else 0.0, min=-1.7976931348623157e308, max=1.7976931348623157e308,
          description="initial quaternion, component {i} (scalar first); normalized at "
