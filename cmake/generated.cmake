@@ -8,6 +8,7 @@ set(AK_CORE_SOURCES
   fmu_src/core/kinematics_rotation_matrix.c
   fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_rates_sequences.c
   fmu_src/core/kinematics_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
   fmu_src/core/attitude.c
@@ -126,11 +127,12 @@ set(AK_CORE_SOURCES_EulerRates
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_rates_sequences.c
   fmu_src/elementary/elementary_reduce.c)
 set(AK_CORE_HEADERS_EulerRates
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
-  fmu_src/core/kinematics_chain.h
+  fmu_src/core/kinematics_sequences.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
   fmu_src/elementary/elementary_double_double.h
@@ -149,6 +151,7 @@ set(AK_CORE_SOURCES_AttitudePropagator
   fmu_src/core/kinematics_general.c
   fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_rates_sequences.c
   fmu_src/core/attitude.c
   fmu_src/core/attitude_angles.c
   fmu_src/elementary/elementary_reduce.c
@@ -157,6 +160,7 @@ set(AK_CORE_HEADERS_AttitudePropagator
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
   fmu_src/core/kinematics_chain.h
+  fmu_src/core/kinematics_sequences.h
   fmu_src/core/attitude.h
   fmu_src/core/attitude_angles.h
   fmu_src/core/attitude_sequences.h
@@ -193,6 +197,7 @@ set(AK_CORE_SOURCES_QuaternionKinematics
   fmu_src/core/kinematics_rotation_matrix.c
   fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_rates_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
   fmu_src/core/attitude_angles.c
   fmu_src/elementary/elementary_reduce.c
@@ -202,6 +207,7 @@ set(AK_CORE_HEADERS_QuaternionKinematics
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
   fmu_src/core/kinematics_chain.h
+  fmu_src/core/kinematics_sequences.h
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude_angles.h
   fmu_src/core/attitude_sequences.h

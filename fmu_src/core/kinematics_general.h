@@ -153,4 +153,15 @@ ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame fra
                                        double alpha_fixed[3], double alpha_body[3],
                                        double *distance);
 
+/* The same from sines = ak_angle_sines(theta) (bit for bit the same results), or from other sines
+ * of the same angles (QuaternionKinematics: those of its angle extraction); theta[1] sizes the
+ * singularity's rounding. */
+ak_rates_status ak_general_euler_rates_of_sines(const ak_sequence *sequence, ak_frame frame,
+                                                const double theta[3], const ak_sines *sines,
+                                                const double omega[3],
+                                                const double omega_dot[3], double tolerance,
+                                                double theta_dot[3], double theta_ddot[3],
+                                                double alpha_fixed[3], double alpha_body[3],
+                                                double *distance);
+
 #endif
