@@ -16,6 +16,7 @@ set(AK_CORE_SOURCES
   fmu_src/elementary/elementary_reduce.c
   fmu_src/elementary/elementary_atan.c
   fmu_src/elementary/elementary_atan2.c
+  fmu_src/core/attitude_angle_sines.c
   fmu_src/core/point_kinematics.c
   fmu_src/core/quaternion_kinematics.c)
 set(AK_CORE_HEADERS
@@ -32,6 +33,7 @@ set(AK_CORE_HEADERS
   fmu_src/elementary/elementary_arc_kernel.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h
+  fmu_src/core/attitude_sines_sequences.h
   fmu_src/core/point_kinematics.h
   fmu_src/core/quaternion_kinematics.h)
 set(AK_MODEL_COMMON_SOURCES
@@ -202,6 +204,7 @@ set(AK_CORE_SOURCES_QuaternionKinematics
   fmu_src/core/attitude_angles.c
   fmu_src/elementary/elementary_reduce.c
   fmu_src/elementary/elementary_atan2.c
+  fmu_src/core/attitude_angle_sines.c
   fmu_src/core/quaternion_kinematics.c)
 set(AK_CORE_HEADERS_QuaternionKinematics
   fmu_src/core/sequences.h
@@ -216,6 +219,7 @@ set(AK_CORE_HEADERS_QuaternionKinematics
   fmu_src/elementary/elementary_arc_kernel.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h
+  fmu_src/core/attitude_sines_sequences.h
   fmu_src/core/quaternion_kinematics.h)
 set(AK_MODEL_SOURCES_QuaternionKinematics
   fmu_src/models/QuaternionKinematics/model.c

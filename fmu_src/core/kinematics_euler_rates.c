@@ -62,16 +62,3 @@ ak_rates_status ak_general_euler_rates_of_sines(const ak_sequence *sequence, ak_
     }
     return (*distance < tolerance) ? AK_RATES_NEAR_SINGULAR : AK_RATES_OK;
 }
-
-ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame frame,
-                                       const double theta[3], const double omega[3],
-                                       const double omega_dot[3], double tolerance,
-                                       double theta_dot[3], double theta_ddot[3],
-                                       double alpha_fixed[3], double alpha_body[3],
-                                       double *distance) {
-    ak_sines sines;
-    ak_angle_sines(theta, &sines);
-    return ak_general_euler_rates_of_sines(sequence, frame, theta, &sines, omega, omega_dot,
-                                           tolerance, theta_dot, theta_ddot, alpha_fixed,
-                                           alpha_body, distance);
-}

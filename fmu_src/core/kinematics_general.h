@@ -143,19 +143,13 @@ void ak_general_partials(const ak_sequence *sequence, const double theta[3],
                          const double theta_dot[3], double W_fixed[3][3], double W_body[3][3],
                          double W_fixed_dot[3][3], double W_body_dot[3][3]);
 
-/* Inverse map (section 6). omega and omega_dot are in the components of `frame`. On AK_RATES_OK
- * and AK_RATES_NEAR_SINGULAR writes theta_dot, theta_ddot, and alpha in both sets of components
- * (the input itself in its own frame, rotated by R in the other). *distance is always written. */
-ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame frame,
-                                       const double theta[3], const double omega[3],
-                                       const double omega_dot[3], double tolerance,
-                                       double theta_dot[3], double theta_ddot[3],
-                                       double alpha_fixed[3], double alpha_body[3],
-                                       double *distance);
-
-/* The same from sines = ak_angle_sines(theta) (bit for bit the same results), or from other sines
- * of the same angles (QuaternionKinematics: those of its angle extraction); theta[1] sizes the
- * singularity's rounding. */
+/* Inverse map (section 6) from sines of theta: ak_angle_sines(theta) (ak_general_euler_rates
+ * below), or other sines of the same angles (QuaternionKinematics: those of its angle
+ * extraction); theta[1] sizes the singularity's rounding. omega and omega_dot are in the
+ * components of `frame`. On AK_RATES_OK and AK_RATES_NEAR_SINGULAR writes theta_dot, theta_ddot,
+ * and alpha in both sets of components (the input itself in its own frame, rotated by R in the
+ * other). *distance is always written. The sequence's generated kernel
+ * (kinematics_rates_sequences.c) between the checks of kinematics_euler_rates.c. */
 ak_rates_status ak_general_euler_rates_of_sines(const ak_sequence *sequence, ak_frame frame,
                                                 const double theta[3], const ak_sines *sines,
                                                 const double omega[3],
@@ -163,5 +157,20 @@ ak_rates_status ak_general_euler_rates_of_sines(const ak_sequence *sequence, ak_
                                                 double theta_dot[3], double theta_ddot[3],
                                                 double alpha_fixed[3], double alpha_body[3],
                                                 double *distance);
+
+/* The same from theta (EulerRates, AttitudePropagator). Inline: a model that passes its own
+ * sines ships no copy of it. */
+static inline ak_rates_status ak_general_euler_rates(const ak_sequence *sequence, ak_frame frame,
+                                                     const double theta[3], const double omega[3],
+                                                     const double omega_dot[3], double tolerance,
+                                                     double theta_dot[3], double theta_ddot[3],
+                                                     double alpha_fixed[3], double alpha_body[3],
+                                                     double *distance) {
+    ak_sines sines;
+    ak_angle_sines(theta, &sines);
+    return ak_general_euler_rates_of_sines(sequence, frame, theta, &sines, omega, omega_dot,
+                                           tolerance, theta_dot, theta_ddot, alpha_fixed,
+                                           alpha_body, distance);
+}
 
 #endif
