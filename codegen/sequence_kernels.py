@@ -1,6 +1,9 @@
 """fmu_src/core/kinematics_sequences.c: omega and alpha of each of the 24 sequences as straight-line
 C, generated from the sequence's axes by running the general chain formulation of
-fmu_src/core/kinematics_chain.h (chain_kinematics of tests/c/kinematics_general_kernel.c) symbolically.
+fmu_src/core/kinematics_chain.h (chain_kinematics of tests/c/kinematics_general_kernel.c) symbolically;
+fmu_src/core/kinematics_rates_sequences.c: the inverse map of each sequence and frame the same way
+(ak_chain_euler_rates_of_sines of that file, between its checks, which stay hand-written in
+fmu_src/core/kinematics_euler_rates.c). Only the operations the outputs need are written.
 
 Every value of that run is a structural zero (a component of a unit axis, or anything multiplied
 by one), or a sign and a C expression. A product with a structural zero is a structural zero, a
@@ -9,7 +12,10 @@ flips the sign; every other operation is written out as the general code does it
 operands in the same order. Round-to-nearest is symmetric ((-a) b = -(a b), a - b = -(b - a)) and
 the build does not contract (-ffp-contract=off), so each output is bit for bit the general
 kernel's, except that an output which is exactly zero may have the other sign (the general code
-adds zeros whose sign depends on the data). tests/c/test_sequence_kernels.c checks it."""
+adds zeros whose sign depends on the data). The one division, by det (rows of W^-1), is written as
+the general code does it: (-x) / d = -(x / d). A structural zero times an infinite or NaN value
+is dropped where the general code gets NaN; the inverse map's overflow check sees such a value in
+another output either way, so the statuses agree. tests/c/test_sequence_kernels.c checks it all."""
 import re
 
 from codegen import project
