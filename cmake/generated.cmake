@@ -8,6 +8,7 @@ set(AK_CORE_SOURCES
   fmu_src/core/kinematics_rotation_matrix.c
   fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_rates_sequences.c
   fmu_src/core/kinematics_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
   fmu_src/core/attitude.c
@@ -15,6 +16,7 @@ set(AK_CORE_SOURCES
   fmu_src/elementary/elementary_reduce.c
   fmu_src/elementary/elementary_atan.c
   fmu_src/elementary/elementary_atan2.c
+  fmu_src/core/attitude_angle_sines.c
   fmu_src/core/point_kinematics.c
   fmu_src/core/quaternion_kinematics.c)
 set(AK_CORE_HEADERS
@@ -31,6 +33,7 @@ set(AK_CORE_HEADERS
   fmu_src/elementary/elementary_arc_kernel.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h
+  fmu_src/core/attitude_sines_sequences.h
   fmu_src/core/point_kinematics.h
   fmu_src/core/quaternion_kinematics.h)
 set(AK_MODEL_COMMON_SOURCES
@@ -126,11 +129,12 @@ set(AK_CORE_SOURCES_EulerRates
   fmu_src/core/sequences.c
   fmu_src/core/kinematics_general.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_rates_sequences.c
   fmu_src/elementary/elementary_reduce.c)
 set(AK_CORE_HEADERS_EulerRates
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
-  fmu_src/core/kinematics_chain.h
+  fmu_src/core/kinematics_sequences.h
   fmu_src/elementary/elementary.h
   fmu_src/elementary/elementary_sincos_three.h
   fmu_src/elementary/elementary_double_double.h
@@ -149,6 +153,7 @@ set(AK_CORE_SOURCES_AttitudePropagator
   fmu_src/core/kinematics_general.c
   fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_rates_sequences.c
   fmu_src/core/attitude.c
   fmu_src/core/attitude_angles.c
   fmu_src/elementary/elementary_reduce.c
@@ -157,6 +162,7 @@ set(AK_CORE_HEADERS_AttitudePropagator
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
   fmu_src/core/kinematics_chain.h
+  fmu_src/core/kinematics_sequences.h
   fmu_src/core/attitude.h
   fmu_src/core/attitude_angles.h
   fmu_src/core/attitude_sequences.h
@@ -193,15 +199,18 @@ set(AK_CORE_SOURCES_QuaternionKinematics
   fmu_src/core/kinematics_rotation_matrix.c
   fmu_src/core/kinematics_partials.c
   fmu_src/core/kinematics_euler_rates.c
+  fmu_src/core/kinematics_rates_sequences.c
   fmu_src/core/kinematics_general_jacobian.c
   fmu_src/core/attitude_angles.c
   fmu_src/elementary/elementary_reduce.c
   fmu_src/elementary/elementary_atan2.c
+  fmu_src/core/attitude_angle_sines.c
   fmu_src/core/quaternion_kinematics.c)
 set(AK_CORE_HEADERS_QuaternionKinematics
   fmu_src/core/sequences.h
   fmu_src/core/kinematics_general.h
   fmu_src/core/kinematics_chain.h
+  fmu_src/core/kinematics_sequences.h
   fmu_src/core/kinematics_general_jacobian.h
   fmu_src/core/attitude_angles.h
   fmu_src/core/attitude_sequences.h
@@ -210,6 +219,7 @@ set(AK_CORE_HEADERS_QuaternionKinematics
   fmu_src/elementary/elementary_arc_kernel.h
   fmu_src/elementary/elementary_double_double.h
   fmu_src/elementary/elementary_coefficients.h
+  fmu_src/core/attitude_sines_sequences.h
   fmu_src/core/quaternion_kinematics.h)
 set(AK_MODEL_SOURCES_QuaternionKinematics
   fmu_src/models/QuaternionKinematics/model.c

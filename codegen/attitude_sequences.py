@@ -1,6 +1,7 @@
 """fmu_src/core/attitude_sequences.h: the angles of each of the 24 sequences as its own function,
 chain_angles of fmu_src/core/attitude_angles.c with the sequence's chain written in, and the
-table that finds a sequence's function from its contents. From codegen/project.py's SEQUENCES, like every
+table that finds a sequence's function from its contents; attitude_sines_sequences.h the same for
+the sines of the principal angles (chain_sines of attitude_angle_sines.c). From codegen/project.py's SEQUENCES, like every
 other table of the sequences: the core types none of them by hand."""
 from codegen import project
 from codegen.generate import HEADER_NOTE
@@ -44,6 +45,36 @@ def attitude_sequences_h():
     return "\n".join(lines)
 
 
+def attitude_sines_sequences_h():
+    lines = ["/* The sines of the principal angles of each of the 24 rotation sequences as its own",
+             " * function: chain_sines (attitude_angle_sines.c) with the sequence's chain constant, as",
+             " * attitude_sequences.h does for the angles, and their table by the sequence's contents.",
+             " * Included by attitude_angle_sines.c.",
+             f" * {HEADER_NOTE.format(source='codegen/project.py (codegen/attitude_sequences.py)')} */",
+             ""]
+    c_bool = {True: "true", False: "false"}
+    for name in project.SEQUENCES:
+        i, j, proper, space = chain(name)
+        function = f"sines_{name}"
+        lines += [f"static bool {function}(double R[3][3], double sin_theta[3], double cos_theta[3]) {{",
+                  f"    return chain_sines({i}, {j}, {c_bool[proper]}, {c_bool[space]}, R, sin_theta, "
+                  "cos_theta);",
+                  "}", ""]
+    lines += ["/* By kind, proper Euler or not, first and second axis of the name (0-based); NULL where",
+              " * there is no sequence. */",
+              "static bool (*const SINES_OF_SEQUENCE[2][2][3][3])(double R[3][3], double sin_theta[3],",
+              "                                                   double cos_theta[3]) = {"]
+    for name in project.SEQUENCES:
+        axes = project.sequence_axes(name)
+        kind = "AK_SPACE_FIXED" if name.startswith("space") else "AK_BODY_FIXED"
+        proper = int(project.sequence_is_proper_euler(name))
+        lines.append(f"    [{kind}][{proper}][{axes[0] - 1}][{axes[1] - 1}] = sines_{name},")
+    lines += ["};", ""]
+    return "\n".join(lines)
+
+
 def outputs():
     from codegen.models import ROOT
-    return {ROOT / "fmu_src" / "core" / "attitude_sequences.h": attitude_sequences_h()}
+    core = ROOT / "fmu_src" / "core"
+    return {core / "attitude_sequences.h": attitude_sequences_h(),
+            core / "attitude_sines_sequences.h": attitude_sines_sequences_h()}

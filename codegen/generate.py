@@ -4,8 +4,11 @@
     fmu_src/core/sequences.c                       the 24 sequences as C data
     fmu_src/core/kinematics_sequences.c            omega and alpha of each sequence as its own
                                                    kernel (codegen/sequence_kernels.py)
+    fmu_src/core/kinematics_rates_sequences.c      the inverse map of each sequence and frame as
+                                                   its own kernel (codegen/sequence_kernels.py)
     fmu_src/core/attitude_sequences.h              the angles of each sequence as its own function,
                                                    and their table (codegen/attitude_sequences.py)
+    fmu_src/core/attitude_sines_sequences.h        the sines of the principal angles, the same way
     fmu_src/models/log_categories.h                the log categories (C enum and names)
     fmu_src/models/<Model>/<Model>_variables.{h,c} value references, counts, GUID, variable table
     fmu_src/models/<Model>/<Model>_derived.c       the calls of the core functions that compute

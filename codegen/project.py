@@ -79,7 +79,8 @@ ENUMERATIONS = {
 # atan, atan2): they are part of it.
 _CORE_SOURCES_FIRST = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation.c",
                        "core/kinematics_rotation_matrix.c", "core/kinematics_partials.c",
-                       "core/kinematics_euler_rates.c", "core/kinematics_sequences.c",
+                       "core/kinematics_euler_rates.c", "core/kinematics_rates_sequences.c",
+                       "core/kinematics_sequences.c",
                        "core/kinematics_general_jacobian.c",
                        "core/attitude.c", "core/attitude_angles.c",
                        "elementary/elementary_reduce.c", "elementary/elementary_atan.c",

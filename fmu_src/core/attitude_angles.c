@@ -145,38 +145,15 @@ static void nearer_set(bool proper, const double principal_set[3], const double 
     }
 }
 
-/* e x for e = +-1: the same bits as the product for every x but a NaN (whose sign may differ). */
-static AK_CHAIN_INLINE double times_sign(double e, double x) {
-    return e > 0.0 ? x : -x;
-}
-
-/* Sections 5 and 6 for the chain i, j (0-based first and second chain axes), proper Euler or
- * Tait-Bryan, theta in chain order (body-fixed) or reversed (space-fixed). Reads `previous` and
- * writes theta last, so that the two may be the same array. */
+/* Sections 5 and 6 for the chain i, j, proper Euler or Tait-Bryan, theta in chain order
+ * (body-fixed) or reversed (space-fixed). Reads `previous` and writes theta last, so that the
+ * two may be the same array. */
 static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, double R[3][3],
                                          const double previous[3], double theta[3],
                                          double *distance) {
-    const int k = 3 - i - j;
-    const double e = (j == (i + 1) % 3) ? 1.0 : -1.0;
     /* The principal chain angles (section 1): the arguments, then the three arctangents. */
-    double d, y[3], x[3];
-    if (proper) {
-        d = sqrt(R[i][j] * R[i][j] + R[i][k] * R[i][k]);
-        y[0] = R[j][i];
-        x[0] = times_sign(-e, R[k][i]);
-        y[1] = d;
-        x[1] = R[i][i];
-        y[2] = R[i][j];
-        x[2] = times_sign(e, R[i][k]);
-    } else {
-        d = sqrt(R[i][i] * R[i][i] + R[i][j] * R[i][j]);
-        y[0] = times_sign(-e, R[j][k]);
-        x[0] = R[k][k];
-        y[1] = times_sign(e, R[i][k]);
-        x[1] = d;
-        y[2] = times_sign(-e, R[i][j]);
-        x[2] = R[i][i];
-    }
+    double y[3], x[3];
+    const double d = ak_chain_arguments(i, j, proper, R, y, x);
     *distance = d;
     double phi[3];
     ak_atan2_three(y, x, phi); /* the bits of three ak_atan2, side by side */
@@ -189,7 +166,7 @@ static AK_CHAIN_INLINE bool chain_angles(int i, int j, bool proper, bool space, 
         return false;
     }
     if (d < AK_ATTITUDE_SINGULAR_DISTANCE) {
-        const chain_axes c = {i, j, k, proper};
+        const chain_axes c = {i, j, 3 - i - j, proper};
         singular_angles(space, &c, R, phi[1], previous, theta);
         return true;
     }

@@ -35,6 +35,7 @@
 #ifndef ANGULAR_KINEMATICS_ATTITUDE_ANGLES_H
 #define ANGULAR_KINEMATICS_ATTITUDE_ANGLES_H
 
+#include <math.h>
 #include <stdbool.h>
 
 #include "sequences.h"
@@ -55,5 +56,51 @@ typedef bool (*ak_attitude_angles_function)(double R[3][3], const double previou
 /* The function of `sequence` (an entry of AK_SEQUENCES or a copy of one), for a caller that
  * extracts the angles of one sequence many times. */
 ak_attitude_angles_function ak_attitude_angles_of(const ak_sequence *sequence);
+
+/* sin and cos of the principal angles of `sequence` for R (ak_attitude_angles with previous NULL,
+ * theta order) from the arguments of their arctangents, without a sine or cosine: true when the
+ * distance is at least AK_ATTITUDE_SINGULAR_DISTANCE, false (nothing written) below it, where the
+ * first and last angle's arguments may vanish. */
+bool ak_attitude_principal_sines(const ak_sequence *sequence, double R[3][3],
+                                 double sin_theta[3], double cos_theta[3]);
+
+/* e x for e = +-1: the same bits as the product for every x but a NaN (whose sign may differ). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline double ak_times_sign(double e, double x) {
+    return e > 0.0 ? x : -x;
+}
+
+/* The arguments y, x of the arctangents of the principal chain angles (section 1) of the chain
+ * i, j (0-based first and second chain axes), proper Euler or Tait-Bryan; returns the distance.
+ * Inline: the angles (attitude_angles.c) and their sines (attitude_angle_sines.c) share it. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline double ak_chain_arguments(int i, int j, bool proper, double R[3][3], double y[3],
+                                        double x[3]) {
+    const int k = 3 - i - j;
+    const double e = (j == (i + 1) % 3) ? 1.0 : -1.0;
+    double d;
+    if (proper) {
+        d = sqrt(R[i][j] * R[i][j] + R[i][k] * R[i][k]);
+        y[0] = R[j][i];
+        x[0] = ak_times_sign(-e, R[k][i]);
+        y[1] = d;
+        x[1] = R[i][i];
+        y[2] = R[i][j];
+        x[2] = ak_times_sign(e, R[i][k]);
+    } else {
+        d = sqrt(R[i][i] * R[i][i] + R[i][j] * R[i][j]);
+        y[0] = ak_times_sign(-e, R[j][k]);
+        x[0] = R[k][k];
+        y[1] = ak_times_sign(e, R[i][k]);
+        x[1] = d;
+        y[2] = ak_times_sign(-e, R[i][j]);
+        x[2] = R[i][i];
+    }
+    return d;
+}
 
 #endif

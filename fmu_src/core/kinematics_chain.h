@@ -24,8 +24,14 @@ static inline void chain_of_sines(const ak_sequence *sequence, const ak_sines *s
     }
 }
 
-/* The chain of theta, with its sines (kinematics_general.c). */
-void ak_chain_of_angles(const ak_sequence *sequence, const double theta[3], chain *ch);
+/* The chain of theta, with its sines. Inline: not every model that computes the sines of theta
+ * uses the chain (EulerRates runs its sequence's generated inverse map on them). */
+static inline void ak_chain_of_angles(const ak_sequence *sequence, const double theta[3],
+                                      chain *ch) {
+    ak_sines sines;
+    ak_angle_sines(theta, &sines);
+    chain_of_sines(sequence, &sines, ch);
+}
 
 /* The two axes after each axis, cyclically: rotation about a turns the (a+1, a+2) plane. */
 static const int NEXT[3] = {1, 2, 0};

@@ -1,16 +1,10 @@
 /* General angular kinematics for every rotation sequence: the formulation is stated in
  * kinematics_general.h, the chain of its section 1 in kinematics_chain.h. This file holds what
- * every model calls: the sines of the angles and the chain of theta. */
-#include "kinematics_chain.h"
+ * every model calls: the sines of the angles. */
+#include "kinematics_general.h"
 
 #include "elementary.h"
 #include "elementary_sincos_three.h"
-
-void ak_chain_of_angles(const ak_sequence *sequence, const double theta[3], chain *ch) {
-    ak_sines sines;
-    ak_angle_sines(theta, &sines);
-    chain_of_sines(sequence, &sines, ch);
-}
 
 /* Angle by angle: an angle off the usual paths (tiny, huge, not finite, near a multiple of
  * pi/2). Out of line: rare, and ak_sincos is large. */

@@ -1,6 +1,7 @@
-/* Omega and alpha of each of the 24 rotation sequences as its own straight-line kernel,
- * generated from the sequence's axes (kinematics_sequences.c, by codegen/sequence_kernels.py):
- * the general chain formulation of kinematics_general.h without its structurally zero terms. */
+/* Omega and alpha of each of the 24 rotation sequences as its own straight-line kernel
+ * (kinematics_sequences.c), and the inverse map of each (kinematics_rates_sequences.c), generated
+ * from the sequence's axes by codegen/sequence_kernels.py: the general chain formulation of
+ * kinematics_general.h without its structurally zero terms. */
 #ifndef ANGULAR_KINEMATICS_KINEMATICS_SEQUENCES_H
 #define ANGULAR_KINEMATICS_KINEMATICS_SEQUENCES_H
 
@@ -14,5 +15,15 @@ typedef void ak_sequence_kinematics(const ak_sines *sines, const double theta_do
 
 /* Indexed like AK_SEQUENCES. */
 extern ak_sequence_kinematics *const AK_SEQUENCE_KINEMATICS[AK_SEQUENCE_COUNT];
+
+/* The inverse map of one sequence and frame between its checks (kinematics_rates_sequences.c):
+ * theta_dot, theta_ddot from sines of theta, det of W (section 4, never 0), omega and
+ * omega_dot in the frame's components; other = omega_dot rotated into the other frame. */
+typedef void ak_sequence_rates(const ak_sines *sines, double det, const double omega[3],
+                               const double omega_dot[3], double theta_dot[3],
+                               double theta_ddot[3], double other[3]);
+
+/* [index in AK_SEQUENCES][ak_frame]. */
+extern ak_sequence_rates *const AK_SEQUENCE_RATES[AK_SEQUENCE_COUNT][2];
 
 #endif

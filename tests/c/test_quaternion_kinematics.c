@@ -2,13 +2,18 @@
  * chosen motions: a unit u with u' = u (0, omega) / 2 and u'' = u (0, alpha) / 2 - |omega|^2 u / 4
  * (the body-frame kinematic equation differentiated once), scaled by a length n(t) with chosen
  * n' and n'' (built in long double). The core must give omega and alpha back, in both frames, from
- * q = n u and its derivatives; and the same bits for -q and for q times a power of 2. */
+ * q = n u and its derivatives; and the same bits for -q and for q times a power of 2. Also the
+ * sines of the principal angles that the model feeds its angle rates with
+ * (ak_attitude_principal_sines) against sin and cos of the angles. */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 
+#include "attitude_angles.h"
+#include "kinematics_general.h"
 #include "quaternion_kinematics.h"
+#include "sequences.h"
 #include "test_check.h"
 
 static uint64_t state = 88172645463325252u;
@@ -223,7 +228,57 @@ static void tangent(void) {
     printf("tangent: largest difference to central differences %.3g\n", worst);
 }
 
+/* ak_attitude_principal_sines: sin and cos of the angles ak_attitude_angles gives (within 1e-15),
+ * for all 24 sequences, random attitudes and attitudes next to and at the singularity; false
+ * exactly below AK_ATTITUDE_SINGULAR_DISTANCE. */
+static double worst_sine_error = 0.0;
+static int sines_refused = 0;
+
+static void check_principal_sines(const ak_sequence *seq, const double q[4]) {
+    const double zero[4] = {0.0, 0.0, 0.0, 0.0};
+    ak_quaternion_outputs out;
+    ak_check(ak_quaternion_kinematics(q, zero, zero, &out) == AK_QUATERNION_OK, "%s: R of q",
+             seq->name);
+    double theta[3], distance, s[3], c[3];
+    (void)ak_attitude_angles(seq, out.R, NULL, theta, &distance);
+    const bool ok = ak_attitude_principal_sines(seq, out.R, s, c);
+    ak_check(ok == (distance >= AK_ATTITUDE_SINGULAR_DISTANCE),
+             "%s: sines given exactly above the singular distance", seq->name);
+    if (!ok) {
+        sines_refused++;
+        return;
+    }
+    for (int k = 0; k < 3; k++) {
+        const double error = fmax(fabs(s[k] - sin(theta[k])), fabs(c[k] - cos(theta[k])));
+        worst_sine_error = fmax(worst_sine_error, error);
+        ak_check(error <= 1e-15, "%s: sin, cos of theta[%d] = %.17g off by %g", seq->name, k,
+                 theta[k], error);
+    }
+}
+
+static void principal_sines(void) {
+    for (int i = 0; i < AK_SEQUENCE_COUNT; i++) {
+        const ak_sequence *seq = &AK_SEQUENCES[i];
+        for (int trial = 0; trial < 2000; trial++) {
+            const double q[4] = {uniform(), uniform(), uniform(), uniform()};
+            check_principal_sines(seq, q);
+            /* theta2 at 10^-1 .. 10^-16 from the singular angle, and at it. */
+            const double singular = seq->proper_euler ? 0.0 : 1.5707963267948966;
+            const double theta[3] = {3.0 * uniform(), singular + pow(10.0, -1.0 - trial % 16) *
+                                                                     (uniform() < 0.0 ? -1.0 : 1.0),
+                                     3.0 * uniform()};
+            double near[4];
+            ak_general_quaternion(seq, theta, near);
+            check_principal_sines(seq, near);
+        }
+    }
+    ak_check(sines_refused > 0, "%s: the singular case met", "principal sines");
+    printf("principal sines: worst difference to sin, cos of the angles %.3g; %d attitudes "
+           "below the singular distance\n", worst_sine_error, sines_refused);
+}
+
 int main(void) {
+    principal_sines();
     tangent();
     spin();
     chosen_motions();

@@ -17,7 +17,8 @@ SOURCES = ["model.c"]
 # The core's sources this model calls (relative to fmu_src/): its FMU compiles and ships these
 # alone, with the headers they and the model include (tests/python/test_dead_code.py).
 CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_partials.c",
-        "core/kinematics_euler_rates.c", "core/attitude.c", "core/attitude_angles.c",
+        "core/kinematics_euler_rates.c", "core/kinematics_rates_sequences.c", "core/attitude.c",
+        "core/attitude_angles.c",
         "elementary/elementary_reduce.c", "elementary/elementary_atan2.c"]
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections.
 DOCUMENTATION = [("docs/attitude_propagator.md", None),

@@ -11,6 +11,7 @@ SOURCES = ["model.c"]
 # The core's sources this model calls (relative to fmu_src/): its FMU compiles and ships these
 # alone, with the headers they and the model include (tests/python/test_dead_code.py).
 CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_euler_rates.c",
+        "core/kinematics_rates_sequences.c",
         "elementary/elementary_reduce.c"]
 # The FMU's documentation/index.html (codegen/documentation.py): these pages or their sections, and
 # these figures of documentation/.

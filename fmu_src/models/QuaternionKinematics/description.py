@@ -14,8 +14,10 @@ SOURCES = ["model.c"]
 # alone, with the headers they and the model include (tests/python/test_dead_code.py).
 CORE = ["core/sequences.c", "core/kinematics_general.c", "core/kinematics_rotation_matrix.c",
         "core/kinematics_partials.c",
-        "core/kinematics_euler_rates.c", "core/kinematics_general_jacobian.c",
-        "core/attitude_angles.c", "core/quaternion_kinematics.c",
+        "core/kinematics_euler_rates.c", "core/kinematics_rates_sequences.c",
+        "core/kinematics_general_jacobian.c",
+        "core/attitude_angles.c", "core/attitude_angle_sines.c",
+        "core/quaternion_kinematics.c",
         "elementary/elementary_reduce.c", "elementary/elementary_atan2.c"]
 # The core's unit test (tests/c/, registered with ctest by CMake from this list).
 CORE_TESTS = ["tests/c/test_quaternion_kinematics.c"]

@@ -29,6 +29,24 @@ _Static_assert(QK_VR_OMEGA_BODY == QK_VR_OMEGA_FIXED + 3 && QK_VR_ALPHA_FIXED ==
                "the outputs follow ak_quaternion_outputs");
 _Static_assert(sizeof(ak_quaternion_outputs) == 22 * sizeof(double), "no padding");
 
+/* The principal angles of R and their rates from omega_body and alpha_body (the inverse map of
+ * kinematics_general.h, section 6, in body components), fed with the sines of the angles that
+ * the arguments of their arctangents give (attitude_angles.h): no sine or cosine computed; sin and
+ * cos of theta next to the singularity, where those arguments may vanish. */
+static ak_rates_status angles_and_rates(const ak_sequence *sequence, ak_quaternion_outputs *o,
+                                        double tolerance, double theta[3], double theta_dot[3],
+                                        double theta_ddot[3], double *distance) {
+    (void)ak_attitude_angles(sequence, o->R, NULL, theta, distance);
+    ak_sines sines;
+    if (!ak_attitude_principal_sines(sequence, o->R, sines.sin, sines.cos)) {
+        ak_angle_sines(theta, &sines);
+    }
+    double alpha_fixed[3], alpha_body[3]; /* the rates' own rotation of alpha: o's are kept */
+    return ak_general_euler_rates_of_sines(sequence, AK_FRAME_BODY, theta, &sines, o->omega_body,
+                                           o->alpha_body, tolerance, theta_dot, theta_ddot,
+                                           alpha_fixed, alpha_body, distance);
+}
+
 static ak_eval_status evaluate(ak_model_data *data) {
     double *v = data->values;
     const double *q = &v[QK_VR_Q];
@@ -64,12 +82,10 @@ static ak_eval_status evaluate(ak_model_data *data) {
 
     const ak_sequence *sequence = &AK_SEQUENCES[(int)v[QK_VR_SEQUENCE] - 1];
     double distance;
-    (void)ak_attitude_angles(sequence, out->R, NULL, &v[QK_VR_THETA], &distance);
     const double tolerance = v[QK_VR_TOLERANCE];
-    double alpha_fixed[3], alpha_body[3]; /* the rates' own rotation of alpha: out's are kept */
-    const ak_rates_status rates = ak_general_euler_rates(
-        sequence, AK_FRAME_BODY, &v[QK_VR_THETA], out->omega_body, out->alpha_body, tolerance,
-        &v[QK_VR_THETA_DOT], &v[QK_VR_THETA_DDOT], alpha_fixed, alpha_body, &distance);
+    const ak_rates_status rates =
+        angles_and_rates(sequence, out, tolerance, &v[QK_VR_THETA], &v[QK_VR_THETA_DOT],
+                         &v[QK_VR_THETA_DDOT], &distance);
     v[QK_VR_SINGULARITY_DISTANCE] = distance;
     if (rates == AK_RATES_OK) {
         return AK_EVAL_OK;
@@ -181,10 +197,8 @@ static void jacobian(const ak_model_data *data, const unsigned int out[], size_t
     const ak_sequence *sequence = &AK_SEQUENCES[(int)v[QK_VR_SEQUENCE] - 1];
     ak_quaternion_outputs now;
     (void)ak_quaternion_kinematics(&v[QK_VR_Q], &v[QK_VR_Q_DOT], &v[QK_VR_Q_DDOT], &now);
-    double theta[3], theta_dot[3], theta_ddot[3], alpha_fixed[3], alpha_body[3], distance;
-    (void)ak_attitude_angles(sequence, now.R, NULL, theta, &distance);
-    (void)ak_general_euler_rates(sequence, AK_FRAME_BODY, theta, now.omega_body, now.alpha_body,
-                                 1.0, theta_dot, theta_ddot, alpha_fixed, alpha_body, &distance);
+    double theta[3], theta_dot[3], theta_ddot[3], distance;
+    (void)angles_and_rates(sequence, &now, 1.0, theta, theta_dot, theta_ddot, &distance);
     double full[AK_GENERAL_N_OUTPUTS][AK_GENERAL_N_INPUTS], W[3][3], W_inverse[3][3];
     ak_general_jacobian(sequence, theta, theta_dot, theta_ddot, full);
     for (int i = 0; i < 3; i++) { /* d omega_body / d theta_dot = W_body */
