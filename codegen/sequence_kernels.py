@@ -311,8 +311,12 @@ def kinematics_rates_sequences_c():
                       f"{indent}double theta_ddot[3], double other[3]) {{"]
             lines += body + ["}", ""]
         table.append(pair)
-    lines.append("ak_sequence_rates *const AK_SEQUENCE_RATES[AK_SEQUENCE_COUNT][2] = {")
-    lines += [f"    {{{fixed}, {body}}}," for fixed, body in table]
+    lines.append("ak_sequence_rates *const AK_SEQUENCE_RATES[2][2][3][3][2] = {")
+    for name, (fixed, body) in zip(project.SEQUENCES, table):
+        axes = project.sequence_axes(name)
+        kind = "AK_SPACE_FIXED" if name.startswith("space") else "AK_BODY_FIXED"
+        proper = int(project.sequence_is_proper_euler(name))
+        lines.append(f"    [{kind}][{proper}][{axes[0] - 1}][{axes[1] - 1}] = {{{fixed}, {body}}},")
     lines += ["};", ""]
     return "\n".join(lines)
 

@@ -9,15 +9,6 @@
 #include <float.h>
 #include <math.h>
 
-/* The index of the sequence in AK_SEQUENCES from its axes and kind (sequences.h gives the
- * order), so that a copy of an entry finds its kernel too. */
-static int sequence_index(const ak_sequence *sequence) {
-    const int a1 = sequence->axes[0], a2 = sequence->axes[1];
-    const int proper = (a1 == sequence->axes[2]);
-    return 12 * (sequence->kind == AK_SPACE_FIXED) + 6 * proper + 2 * (a1 - 1) +
-           (a2 > 6 - a1 - a2);
-}
-
 /* det of the chain's W = [u1 u2 u3] (header, section 4), in closed form so that it keeps its
  * relative accuracy near zero: -sin(theta2) for proper Euler sequences, +-cos(theta2) for
  * Tait-Bryan ones, + when the chain's second axis follows its first cyclically. det W of the
@@ -47,8 +38,9 @@ ak_rates_status ak_general_euler_rates_of_sines(const ak_sequence *sequence, ak_
     }
     const int body = (frame == AK_FRAME_BODY);
     double td[3], tdd[3], other[3];
-    AK_SEQUENCE_RATES[sequence_index(sequence)][body](sines, det, omega, omega_dot, td, tdd,
-                                                      other);
+    const int *a = sequence->axes;
+    AK_SEQUENCE_RATES[sequence->kind][a[0] == a[2]][a[0] - 1][a[1] - 1][body](
+        sines, det, omega, omega_dot, td, tdd, other);
     for (int k = 0; k < 3; k++) {
         if (!isfinite(td[k]) || !isfinite(tdd[k]) || !isfinite(other[k])) {
             return AK_RATES_OVERFLOW;

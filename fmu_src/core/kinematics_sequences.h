@@ -23,7 +23,8 @@ typedef void ak_sequence_rates(const ak_sines *sines, double det, const double o
                                const double omega_dot[3], double theta_dot[3],
                                double theta_ddot[3], double other[3]);
 
-/* [index in AK_SEQUENCES][ak_frame]. */
-extern ak_sequence_rates *const AK_SEQUENCE_RATES[AK_SEQUENCE_COUNT][2];
+/* [kind][proper Euler][first axis - 1][second axis - 1][frame]: a sequence's facts, no order;
+ * NULL where there is no sequence. */
+extern ak_sequence_rates *const AK_SEQUENCE_RATES[2][2][3][3][2];
 
 #endif
