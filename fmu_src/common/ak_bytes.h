@@ -37,8 +37,8 @@ static inline bool ak_same_double(double a, double b) {
 /* What ak_store_if_finite did. */
 typedef enum { AK_STORE_REFUSED, AK_STORE_SAME, AK_STORE_CHANGED } ak_store_result;
 
-/* The setters' usual path: stores n doubles of src into dst only if every one is finite
- * (AK_STORE_REFUSED: one is NaN or infinite, nothing stored; the caller's checked path names it),
+/* A kept set's store: n doubles of src into dst only if every one is finite (AK_STORE_REFUSED:
+ * one is NaN or infinite, nothing stored; the caller's full check names it),
  * and says whether any bit changed (same rule as ak_same_double). One pass without a branch per
  * value, then one copy: this runs at every communication point of every master. */
 static AK_ALWAYS_INLINE ak_store_result ak_store_if_finite(double *dst, const double *src, size_t n) {

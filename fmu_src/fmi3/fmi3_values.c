@@ -117,26 +117,30 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     return fmi3_status(ak_set_values(c, &FMI3_RULES[AK3_SET_FLOAT64], vr, nvr, values, nValues));
 }
 
+/* The call of fmi3GetInt64 or fmi3SetInt64 allowed, its arrays given, every value reference an
+ * Enumeration's (a scalar) and nValues one per value reference; else logs the first fault. */
+static bool int64_call_valid(ak_instance *instance, ak3_function function,
+                             const fmi3ValueReference vr[], size_t nvr, const void *values,
+                             size_t nValues) {
+    if (!ak_values_call_valid(instance, &FMI3_RULES[function], vr, nvr, values, nValues)) {
+        return false;
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        if (array_of_type(instance, fmi3_name(function), i, vr[i], AK_TYPE_INTEGER) == NULL) {
+            return false;
+        }
+    }
+    return ak3_count_matches(instance, fmi3_name(function), "nValues", nValues, nvr, vr, nvr);
+}
+
 fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         fmi3Int64 values[], size_t nValues) {
     ak_instance *instance = c;
-    const char *self = fmi3_name(AK3_GET_INT64);
-    if (!ak_values_call_valid(instance, &FMI3_RULES[AK3_GET_INT64], vr, nvr, values, nValues)) {
-        return fmi3Error;
-    }
-    size_t total = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        const ak3_array *array = array_of_type(instance, self, i, vr[i], AK_TYPE_INTEGER);
-        if (array == NULL) {
-            return fmi3Error;
-        }
-        total += array->n_elements;
-    }
-    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+    if (!int64_call_valid(instance, AK3_GET_INT64, vr, nvr, values, nValues)) {
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
-        values[i] = (fmi3Int64)instance->data.values[vr[i]]; /* Enumerations are scalars */
+        values[i] = (fmi3Int64)instance->data.values[vr[i]];
     }
     return fmi3OK;
 }
@@ -145,18 +149,7 @@ fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
                         const fmi3Int64 values[], size_t nValues) {
     ak_instance *instance = c;
     const char *self = fmi3_name(AK3_SET_INT64);
-    if (!ak_values_call_valid(instance, &FMI3_RULES[AK3_SET_INT64], vr, nvr, values, nValues)) {
-        return fmi3Error;
-    }
-    size_t total = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        const ak3_array *array = array_of_type(instance, self, i, vr[i], AK_TYPE_INTEGER);
-        if (array == NULL) {
-            return fmi3Error;
-        }
-        total += array->n_elements;
-    }
-    if (nValues != total && !ak3_count_matches(instance, self, "nValues", nValues, total, vr, nvr)) {
+    if (!int64_call_valid(instance, AK3_SET_INT64, vr, nvr, values, nValues)) {
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {

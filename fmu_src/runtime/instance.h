@@ -186,8 +186,7 @@ static inline bool ak_call_allowed(const ak_instance *instance, const ak_functio
 }
 
 /* The test of ak_call_allowed alone: true for a legal call with the trace off, and nothing logged
- * either way (the usual paths of the getters and setters; a call it refuses takes their checked
- * path, which logs). */
+ * either way (the getters' and setters' kept requests; a call it refuses is checked in full). */
 static inline bool ak_call_passes(const ak_instance *instance, const ak_function_rule *rule) {
     /* A function of both interfaces (most) needs no interface test: with the table a constant,
      * the compiler drops it. */

@@ -1,9 +1,10 @@
-/* Gets and sets of Real values, for both FMI layers, and what an Integer get or set shares with
- * them. A value reference of the layer names ak_instance.elements consecutive values (FMI 2: one;
- * FMI 3: an array's); each call checks all of its arguments before it touches a value, so a
- * refused call changes nothing. The variables are the model's: Real inputs, Real outputs, and
- * parameters of variability fixed (Real or Integer), which can be set only in Instantiated and
- * Initialization Mode. */
+/* Gets and sets of Real values, one path for both FMI layers, and what an Integer get or set
+ * shares with them. A value reference of the layer names ak_instance.elements consecutive values
+ * (FMI 2: one; FMI 3: an array's); each call checks all of its arguments before it touches a
+ * value, so a refused call changes nothing. A request checked once is kept (ak_kept_request), so
+ * that the same request at the next communication point costs one comparison. The variables are
+ * the model's: Real inputs, Real outputs, and parameters of variability fixed (Real or Integer),
+ * which can be set only in Instantiated and Initialization Mode. */
 #include <math.h>
 #include <string.h>
 
@@ -375,16 +376,15 @@ ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, const double values[],
                         size_t n_values) {
     /* The set of the last step's inputs again (one run), untraced, no input derivative to
-     * forget: only the values need a check, done as they are stored; if one is not finite,
-     * the checked path names it. One input (FMI 3's usual set of an array) needs no kept set: one
-     * look-up checks it. FMI 2's count of every input a constant, as in ak_get_values. */
+     * forget: only the values need a check, done as they are stored; if one is not finite, the
+     * full check names it. One input array (FMI 3's usual set) is checked by one look-up. FMI 2's
+     * count of every input a constant, as in ak_get_values. */
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
-    const ak_kept_request *kept = &instance->kept_set;
     if (ak_call_passes(instance, call) && vr != NULL && values != NULL &&
         !instance->data.any_input_derivative &&
         (nvr == 1 ? vr[0] < n_inputs && n_values > 0 && instance->elements[vr[0]] == n_values
-         : nvr == n_inputs ? same_request(kept, vr, n_inputs, n_values)
-                           : same_request(kept, vr, nvr, n_values)) &&
+         : nvr == n_inputs ? same_request(&instance->kept_set, vr, n_inputs, n_values)
+                           : same_request(&instance->kept_set, vr, nvr, n_values)) &&
         store_inputs(instance, vr[0], values, n_values)) {
         return AK_STATUS_OK;
     }
