@@ -22,14 +22,6 @@
 /* After the input derivatives changed: recomputes data.any_input_derivative, and marks the
  * outputs stale for a model whose outputs use them. */
 void ak_input_derivatives_changed(ak_instance *instance);
-/* A set of an input forgets its derivatives: the importer restated the value at a new point
- * without a slope, so the input is held from there (docs/capabilities.md). */
-void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
-
-/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
- * initialization has not ended (the states follow the parameters until then); after that a
- * state is current without an evaluation. */
-bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr);
 /* Gets and sets of Real values: vr[i] names ak_instance.elements[vr[i]] consecutive values (FMI
  * 2: one; FMI 3: an array), n_values in all (FMI 2: nvr). Each checks the call and every argument
  * first and refuses in the layer's words (ak_layer); a refused call changes nothing. A get brings

@@ -43,7 +43,9 @@ void ak_input_derivatives_changed(ak_instance *instance) {
     }
 }
 
-void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr) {
+/* A set of an input forgets its derivatives: the importer restated the value at a new point
+ * without a slope, so the input is held from there (docs/capabilities.md). */
+static void forget_input_derivatives(ak_instance *instance, unsigned int input_vr) {
     for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
         instance->data.input_derivatives[input_vr][n] = 0.0;
     }
@@ -106,11 +108,14 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
     }
     /* The importer restated the input at a new point without a slope: it is held from there. */
     if (instance->data.any_input_derivative && vr < (unsigned int)AK_MODEL.n_inputs) {
-        ak_forget_input_derivatives(instance, vr);
+        forget_input_derivatives(instance, vr);
     }
 }
 
-bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr) {
+/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
+ * initialization has not ended (the states follow the parameters until then). */
+static bool states_follow_parameters(const ak_instance *instance, const unsigned int vr[],
+                                     size_t nvr) {
     if ((instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) == 0) {
         return false;
     }
@@ -156,7 +161,7 @@ static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int
     if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
         return ak_instance_update(instance, AK_GROUP_LAZY);
     }
-    if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) || ak_states_follow_parameters(instance, vr, nvr)) {
+    if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) || states_follow_parameters(instance, vr, nvr)) {
         return ak_instance_update(instance, AK_GROUP_MAIN);
     }
     return AK_STATUS_OK;
