@@ -201,9 +201,10 @@ static AK_ALWAYS_INLINE bool same_request(const ak_kept_request *kept, const uns
     return differ == 0;
 }
 
+/* Keeps a checked request (none of no value reference: vr may be NULL then). */
 static void keep_request(ak_kept_request *kept, const unsigned int vr[], size_t nvr,
                          size_t n_values, unsigned int roles, bool one_run) {
-    if (nvr <= AK_MAX_VARIABLES) {
+    if (nvr > 0 && nvr <= AK_MAX_VARIABLES) {
         memcpy(kept->vr, vr, nvr * sizeof vr[0]);
         kept->nvr = nvr, kept->n_values = n_values, kept->roles = roles, kept->one_run = one_run;
     }
