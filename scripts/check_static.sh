@@ -73,9 +73,8 @@ done
   echo '<?xml version="1.0"?>'
   echo '<suppressions>'
   echo '  <!-- Reason: an FMI 3.0 entry point, called by the importer, never by the FMU itself. -->'
-  echo '  <!-- Reason: the runtime'"'"'s scalar gets and sets and its input derivatives, which the FMI 2'
-  echo '       layer calls; FMI 3 reads arrays and has no input derivatives. -->'
-  for symbol in ak_get_reals ak_set_reals ak_set_input_derivatives; do
+  echo '  <!-- Reason: the runtime'"'"'s input derivatives, which the FMI 2 layer calls; FMI 3 has none. -->'
+  for symbol in ak_set_input_derivatives; do
     echo "  <suppress><id>unusedFunction</id><symbolName>$symbol</symbolName></suppress>"
   done
   grep -oE 'FMI3_Export +fmi3[A-Za-z0-9]+TYPE +fmi3[A-Za-z0-9]+;' "$headers/fmi3Functions.h" |

@@ -8,6 +8,8 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "ak_compiler.h"
+
 _Static_assert(sizeof(double) == 8, "the layouts store IEEE 754 binary64 doubles");
 
 /* CRC-32 of IEEE 802.3 (reflected, polynomial 0xEDB88320), as zlib's crc32. */
@@ -35,11 +37,11 @@ static inline bool ak_same_double(double a, double b) {
 /* What ak_store_if_finite did. */
 typedef enum { AK_STORE_REFUSED, AK_STORE_SAME, AK_STORE_CHANGED } ak_store_result;
 
-/* The setters' usual path: stores n doubles of src into dst only if every one is finite
- * (AK_STORE_REFUSED: one is NaN or infinite, nothing stored; the caller's checked path names it),
+/* A kept set's store: n doubles of src into dst only if every one is finite (AK_STORE_REFUSED:
+ * one is NaN or infinite, nothing stored; the caller's full check names it),
  * and says whether any bit changed (same rule as ak_same_double). One pass without a branch per
  * value, then one copy: this runs at every communication point of every master. */
-static inline ak_store_result ak_store_if_finite(double *dst, const double *src, size_t n) {
+static AK_ALWAYS_INLINE ak_store_result ak_store_if_finite(double *dst, const double *src, size_t n) {
     const uint64_t exponent = 0x7FF0000000000000u;
     const uint64_t carry = 0x0010000000000000u; /* added to the exponent: reaches the sign bit
                                                    only from all ones (Inf or NaN) */

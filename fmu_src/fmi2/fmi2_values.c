@@ -4,12 +4,12 @@
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        fmi2Real value[]) {
-    return fmi2_status(ak_get_reals(c, &FMI2_RULES[AK_FMI2_GET_REAL], vr, nvr, value));
+    return fmi2_status(ak_get_values(c, &FMI2_RULES[AK_FMI2_GET_REAL], vr, nvr, value, nvr));
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        const fmi2Real value[]) {
-    return fmi2_status(ak_set_reals(c, &FMI2_RULES[AK_FMI2_SET_REAL], vr, nvr, value));
+    return fmi2_status(ak_set_values(c, &FMI2_RULES[AK_FMI2_SET_REAL], vr, nvr, value, nvr));
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,

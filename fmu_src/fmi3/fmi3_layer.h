@@ -82,23 +82,10 @@ extern const ak_layer FMI3_LAYER;
 
 /* An FMI 3 instance: the runtime's, and the importer's logger. FMI 3 gives no memory callbacks:
  * the instance is on the C heap. */
-/* The last usual get of output arrays (fmi3_values.c): importers ask the same at every step, so
- * the same request is recognized by its value references alone. nvr 0: none kept. */
-enum { AK3_KEPT_GET_ARRAYS = 8 };
-typedef struct {
-    size_t nvr;
-    fmi3ValueReference vr[AK3_KEPT_GET_ARRAYS];
-    size_t n_values;
-    ak_group upto;
-    bool one_run;     /* the arrays follow each other: one copy */
-    bool states_only; /* the states alone (AttitudePropagator's q): no evaluation once initialized */
-} ak3_kept_get;
-
 typedef struct {
     ak_instance base; /* first: an fmi3Instance is also an ak_instance */
     fmi3InstanceEnvironment environment;
     fmi3LogMessageCallback log_message;
-    ak3_kept_get last_get;
 } fmi3_instance;
 
 static inline bool fmi3_allowed(const ak_instance *instance, ak3_function function) {

@@ -141,6 +141,7 @@ void ak_instance_reset(ak_instance *instance) {
     instance->stop_time = 0.0;
     instance->calling = NULL;
     instance->kept_get.nvr = 0;
+    instance->kept_set.nvr = 0;
     for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
         instance->real_role[vr] = (unsigned char)real_role(ak_variable_of((unsigned int)vr));
     }
@@ -149,13 +150,6 @@ void ak_instance_reset(ak_instance *instance) {
                                : ak_variable_of(vr) != NULL      ? 1u
                                                                  : 0u;
         instance->elements[vr] = (unsigned char)n;
-    }
-    for (int role = 0; role < AK_N_REAL_ROLES; role++) {
-        instance->roles_before[role][0] = 0;
-        for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
-            instance->roles_before[role][vr + 1] = (unsigned char)(instance->roles_before[role][vr] +
-                                                                   (instance->real_role[vr] == role));
-        }
     }
     reset_model_data(&instance->data);
     ak_outputs_reset(&instance->outputs);

@@ -105,22 +105,22 @@ typedef enum {
     AK_REAL_INPUT,
     AK_REAL_PARAMETER,
     /* A continuous state that is an output: always current once initialization ended (the step
-     * and the state setters write it), so a get evaluates only before that (ak_get_reals and the
-     * FMI 3 getter ask for it then; it does not decide a run's roles). */
+     * and the state setters write it), so a get evaluates only before that. */
     AK_REAL_STATE_OUTPUT,
     AK_REAL_MAIN_OUTPUT,
     AK_REAL_LAZY_OUTPUT,
-    AK_REAL_DERIVED_OUTPUT,
-    AK_N_REAL_ROLES
+    AK_REAL_DERIVED_OUTPUT
 } ak_real_role;
 
-/* The last get of FMI 2 scalars that was not one run, kept (ak_get_reals): importers ask the same
- * at every step. */
+/* A get or set checked and kept (values.c): importers ask the same at every communication point.
+ * nvr 0: none. */
 typedef struct {
-    size_t nvr; /* 0: none kept */
+    size_t nvr;
+    size_t n_values;
     unsigned int vr[AK_MAX_VARIABLES];
-    unsigned int roles; /* 1 << role for each role read (ak_real_role) */
-} ak_kept_get;
+    unsigned int roles; /* a get's: 1 << ak_real_role for each role read */
+    bool one_run;       /* the values follow each other (a set: always, of inputs) */
+} ak_kept_request;
 
 struct ak_instance_s {
     const ak_layer *layer;
@@ -136,11 +136,8 @@ struct ak_instance_s {
     double stop_time;
 
     /* The role of each value reference, from the model's variable table: the getters and
-     * setters read one byte per value instead of a variable's record. roles_before[role][vr]:
-     * how many value references below vr have that role, so that a run of consecutive value
-     * references learns its roles from two entries per role. */
+     * setters read one byte per value instead of a variable's record. */
     unsigned char real_role[AK_MAX_VARIABLES];
-    unsigned char roles_before[AK_N_REAL_ROLES][AK_MAX_VARIABLES + 1];
     /* How many consecutive values each value reference names in the layer's calls
      * (ak_layer.elements_at); 0: none. */
     unsigned char elements[AK_MAX_VARIABLES];
@@ -154,7 +151,7 @@ struct ak_instance_s {
     const char *calling;
     /* FMU states made by this instance and not yet freed (fmu_states.c). */
     struct ak_fmu_state_s *live_states;
-    ak_kept_get kept_get;
+    ak_kept_request kept_get, kept_set;
 };
 
 /* True when a message of this category reaches the importer (a category is never on without a
@@ -189,8 +186,7 @@ static inline bool ak_call_allowed(const ak_instance *instance, const ak_functio
 }
 
 /* The test of ak_call_allowed alone: true for a legal call with the trace off, and nothing logged
- * either way (the usual paths of the getters and setters; a call it refuses takes their checked
- * path, which logs). */
+ * either way (the getters' and setters' kept requests; a call it refuses is checked in full). */
 static inline bool ak_call_passes(const ak_instance *instance, const ak_function_rule *rule) {
     /* A function of both interfaces (most) needs no interface test: with the table a constant,
      * the compiler drops it. */
@@ -243,20 +239,6 @@ void ak_instance_reset(ak_instance *instance);
 /* The role of a value reference in a Real get or set (AK_REAL_ABSENT for any out of range). */
 static inline ak_real_role ak_real_role_of(const ak_instance *instance, unsigned int vr) {
     return vr < AK_MAX_VARIABLES ? (ak_real_role)instance->real_role[vr] : AK_REAL_ABSENT;
-}
-
-/* Of first .. first + n - 1 (first + n <= AK_MAX_VARIABLES), the roles that decide what a get does
- * (absent: refused; an output group: brought up to date), one bit (1 << role) each. */
-static inline unsigned int ak_real_roles_of_run(const ak_instance *instance, unsigned int first,
-                                                size_t n) {
-    static const ak_real_role DECIDING[] = {AK_REAL_ABSENT, AK_REAL_MAIN_OUTPUT,
-                                            AK_REAL_LAZY_OUTPUT, AK_REAL_DERIVED_OUTPUT};
-    unsigned int roles = 0;
-    for (size_t k = 0; k < sizeof DECIDING / sizeof DECIDING[0]; k++) {
-        const unsigned char *before = instance->roles_before[DECIDING[k]];
-        roles |= (unsigned int)(before[first + n] != before[first]) << DECIDING[k];
-    }
-    return roles;
 }
 
 /* Brings the output groups up to `upto` (main; main and lazy; every output) up to date with the

@@ -19,80 +19,23 @@
 
 /* --- values (values.c) ------------------------------------------------------------------------- */
 
-/* to[0 .. n - 1] := from[0 .. n - 1]. The usual counts of a get (a vector of 3, a quaternion,
- * four vectors) with the count a constant: a few moves instead of a call of memcpy, element by
- * element (gcc made a memcpy of 12 doubles a slow rep movs). */
-static AK_ALWAYS_INLINE void ak_copy_values(double *to, const double *from, size_t n) {
-    if (n == 12) { /* the most usual first: one comparison on its path */
-        for (size_t k = 0; k < 12; k++) {
-            to[k] = from[k];
-        }
-    } else if (n == 4) {
-        for (size_t k = 0; k < 4; k++) {
-            to[k] = from[k];
-        }
-    } else if (n == 3) {
-        for (size_t k = 0; k < 3; k++) {
-            to[k] = from[k];
-        }
-    } else {
-        memcpy(to, from, n * sizeof to[0]);
-    }
-}
-/* Whether a and b hold the same n value references (FMI 3's kept get asked again): a few compared
- * element by element (a call of memcmp costs more), more with memcmp. */
-static AK_ALWAYS_INLINE bool ak_same_value_references(const unsigned int a[],
-                                                      const unsigned int b[], size_t n) {
-    if (n > 16) {
-        return memcmp(a, b, n * sizeof a[0]) == 0;
-    }
-    for (size_t i = 0; i < n; i++) {
-        if (a[i] != b[i]) {
-            return false;
-        }
-    }
-    return true;
-}
 /* After the input derivatives changed: recomputes data.any_input_derivative, and marks the
  * outputs stale for a model whose outputs use them. */
 void ak_input_derivatives_changed(ak_instance *instance);
-/* A set of an input forgets its derivatives: the importer restated the value at a new point
- * without a slope, so the input is held from there (docs/capabilities.md). */
-void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr);
-
-/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
- * initialization has not ended (the states follow the parameters until then); after that a
- * state is current without an evaluation. */
-bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr);
 /* Gets and sets of Real values: vr[i] names ak_instance.elements[vr[i]] consecutive values (FMI
  * 2: one; FMI 3: an array), n_values in all (FMI 2: nvr). Each checks the call and every argument
  * first and refuses in the layer's words (ak_layer); a refused call changes nothing. A get brings
  * what it reads up to date (at most one evaluation per change); a set marks the outputs stale
- * only when a bit changed. The layers' usual gets and sets (below, and FMI 3's) take a shorter
- * path for the calls of every communication point and come here for anything else. */
+ * only when a bit changed. */
 ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, double values[], size_t n_values);
 ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, const double values[],
                         size_t n_values);
-/* FMI 2's gets and sets of Real values: a run of consecutive value references untraced (a run of
- * inputs, finite, no input derivative to forget) directly, anything else by ak_get_values and
- * ak_set_values. */
-ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
-                       const unsigned int vr[], size_t nvr, double value[]);
-ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
-                       const unsigned int vr[], size_t nvr, const double value[]);
 /* The variable of a scalar value reference, of the given type (Real or Integer), or NULL after
  * logging why not. */
 const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
                                        unsigned int vr, size_t index, ak_type type);
-/* The usual set of every communication point: n finite values of consecutive inputs from first
- * (first + n <= n_inputs), untraced, no input derivative to forget; usual_n, the count the
- * layer's importers usually set (every input of FMI 2, one vector of 3 of FMI 3), is copied
- * unrolled. False (nothing stored) when a value is not finite: the caller takes its checked
- * path. */
-bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
-                     size_t usual_n);
 /* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
 bool ak_parameter_settable(const ak_instance *instance, const char *function, size_t index,
                            const ak_variable *variable, double value);

@@ -1,23 +1,33 @@
-/* Gets and sets of Real values, for both FMI layers, and what an Integer get or set shares with
- * them. A value reference of the layer names ak_instance.elements consecutive values (FMI 2: one;
- * FMI 3: an array's); each call checks all of its arguments before it touches a value, so a
- * refused call changes nothing. The variables are the model's: Real inputs, Real outputs, and
- * parameters of variability fixed (Real or Integer), which can be set only in Instantiated and
- * Initialization Mode. */
+/* Gets and sets of Real values, one path for both FMI layers, and what an Integer get or set
+ * shares with them. A value reference of the layer names ak_instance.elements consecutive values
+ * (FMI 2: one; FMI 3: an array's); each call checks all of its arguments before it touches a
+ * value, so a refused call changes nothing. A request checked once is kept (ak_kept_request), so
+ * that the same request at the next communication point costs one comparison. The variables are
+ * the model's: Real inputs, Real outputs, and parameters of variability fixed (Real or Integer),
+ * which can be set only in Instantiated and Initialization Mode. */
 #include <math.h>
 #include <string.h>
 
 #include "ak_bytes.h"
 #include "runtime.h"
 
-/* Every value reference a value array can hold, in order: vr[] is a run first, first + 1, ..
- * exactly when it equals the slice of this table that starts at first (one memcmp). */
-static const unsigned int EVERY_VALUE_REFERENCE[AK_MAX_VARIABLES] = {
-    0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
-    20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39,
-    40, 41, 42, 43, 44, 45, 46, 47, 48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59,
-    60, 61, 62, 63, 64, 65, 66, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77, 78, 79};
-_Static_assert(AK_MAX_VARIABLES == 80, "EVERY_VALUE_REFERENCE lists them all");
+/* to[0 .. n - 1] := from[0 .. n - 1], the counts of the goals' gets (four vectors, a quaternion,
+ * a vector) as constants: a few moves, not a memcpy (gcc made one of 12 a slow rep movs). */
+static AK_ALWAYS_INLINE void copy_values(double *to, const double *from, size_t n) {
+    if (n == 12) {
+        for (size_t k = 0; k < 12; k++) {
+            to[k] = from[k];
+        }
+    } else if (n == 4) {
+        for (size_t k = 0; k < 4; k++) {
+            to[k] = from[k];
+        }
+    } else {
+        for (size_t k = 0; k < n; k++) {
+            to[k] = from[k];
+        }
+    }
+}
 
 void ak_input_derivatives_changed(ak_instance *instance) {
     if (AK_MODEL.outputs_use_input_derivatives) {
@@ -33,7 +43,9 @@ void ak_input_derivatives_changed(ak_instance *instance) {
     }
 }
 
-void ak_forget_input_derivatives(ak_instance *instance, unsigned int input_vr) {
+/* A set of an input forgets its derivatives: the importer restated the value at a new point
+ * without a slope, so the input is held from there (docs/capabilities.md). */
+static void forget_input_derivatives(ak_instance *instance, unsigned int input_vr) {
     for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
         instance->data.input_derivatives[input_vr][n] = 0.0;
     }
@@ -96,11 +108,14 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
     }
     /* The importer restated the input at a new point without a slope: it is held from there. */
     if (instance->data.any_input_derivative && vr < (unsigned int)AK_MODEL.n_inputs) {
-        ak_forget_input_derivatives(instance, vr);
+        forget_input_derivatives(instance, vr);
     }
 }
 
-bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int vr[], size_t nvr) {
+/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
+ * initialization has not ended (the states follow the parameters until then). */
+static bool states_follow_parameters(const ak_instance *instance, const unsigned int vr[],
+                                     size_t nvr) {
     if ((instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) == 0) {
         return false;
     }
@@ -110,38 +125,6 @@ bool ak_states_follow_parameters(const ak_instance *instance, const unsigned int
         }
     }
     return false;
-}
-
-/* Runs up to this long are compared element by element, longer ones with one memcmp. */
-enum { SHORT_RUN = 8 };
-
-/* True when vr holds first, first + 1, .. (nvr >= 1) within the value array. */
-static AK_ALWAYS_INLINE bool consecutive(const unsigned int vr[], size_t nvr) {
-    if (nvr == 0 || (size_t)vr[0] + nvr > AK_MAX_VARIABLES ||
-        vr[nvr - 1] != vr[0] + nvr - 1) { /* cheap, and enough to rule most others out */
-        return false;
-    }
-    if (nvr > SHORT_RUN) {
-        return memcmp(vr, &EVERY_VALUE_REFERENCE[vr[0]], nvr * sizeof vr[0]) == 0;
-    }
-    bool run = true;
-    for (size_t i = 1; i + 1 < nvr; i++) {
-        run &= vr[i] == vr[0] + i;
-    }
-    return run;
-}
-
-/* ak_store_if_finite with the count a constant for a vector or a quaternion (as ak_copy_values). */
-static AK_ALWAYS_INLINE ak_store_result store_values(double *target, const double value[],
-                                                     size_t n) {
-    switch (n) {
-    case 3:
-        return ak_store_if_finite(target, value, 3);
-    case 4:
-        return ak_store_if_finite(target, value, 4);
-    default:
-        return ak_store_if_finite(target, value, n);
-    }
 }
 
 /* Logs why vr (vr_name[i]) names no Real value to get or set: the layer's words, FMI 2's by
@@ -178,112 +161,91 @@ static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int
     if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
         return ak_instance_update(instance, AK_GROUP_LAZY);
     }
-    if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) || ak_states_follow_parameters(instance, vr, nvr)) {
+    if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) || states_follow_parameters(instance, vr, nvr)) {
         return ak_instance_update(instance, AK_GROUP_MAIN);
     }
     return AK_STATUS_OK;
 }
 
-/* Out of line: the layers' usual gets stay small functions. */
-AK_NOINLINE ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
-                                    const unsigned int vr[], size_t nvr, double values[],
-                                    size_t n_values) {
-    if (!ak_values_call_valid(instance, call, vr, nvr, values, n_values)) {
-        return AK_STATUS_ERROR;
-    }
-    unsigned int roles = 0;
+/* Whether vr[] names n_values Real values a get can read (the time included); else logs why not.
+ * *roles: the roles read (1 << ak_real_role each); *one_run: the values follow each other. */
+static bool check_get(const ak_instance *instance, const char *function, const unsigned int vr[],
+                      size_t nvr, size_t n_values, unsigned int *roles, bool *one_run) {
     size_t total = 0;
+    *roles = 0;
+    *one_run = nvr > 0;
     for (size_t i = 0; i < nvr; i++) {
         const ak_real_role role = ak_real_role_of(instance, vr[i]);
         if ((role == AK_REAL_ABSENT || instance->elements[vr[i]] == 0) && !is_time(instance, vr[i])) {
-            refuse_real(instance, call->name, i, vr[i], false);
-            return AK_STATUS_ERROR;
+            refuse_real(instance, function, i, vr[i], false);
+            return false;
         }
-        roles |= 1u << role; /* an array's first value stands for it: one variable, one role */
+        *roles |= 1u << role; /* an array's first value stands for it: one variable, one role */
+        *one_run &= role != AK_REAL_ABSENT && vr[i] == vr[0] + total;
         total += role == AK_REAL_ABSENT ? 1u : instance->elements[vr[i]]; /* time: one value */
     }
-    if (!count_matches(instance, call->name, vr, nvr, n_values, total)) {
-        return AK_STATUS_ERROR;
+    return count_matches(instance, function, vr, nvr, n_values, total);
+}
+
+/* Whether vr[] and n_values are the kept request's. No branch per value reference: with a
+ * constant nvr the compiler compares them a vector at a time. */
+static AK_ALWAYS_INLINE bool same_request(const ak_kept_request *kept, const unsigned int vr[],
+                                          size_t nvr, size_t n_values) {
+    if (nvr == 0 || nvr != kept->nvr || n_values != kept->n_values) {
+        return false;
     }
+    unsigned int differ = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        differ |= vr[i] ^ kept->vr[i];
+    }
+    return differ == 0;
+}
+
+/* Keeps a checked request (none of no value reference: vr may be NULL then). */
+static void keep_request(ak_kept_request *kept, const unsigned int vr[], size_t nvr,
+                         size_t n_values, unsigned int roles, bool one_run) {
+    if (nvr > 0 && nvr <= AK_MAX_VARIABLES) {
+        memcpy(kept->vr, vr, nvr * sizeof vr[0]);
+        kept->nvr = nvr, kept->n_values = n_values, kept->roles = roles, kept->one_run = one_run;
+    }
+}
+
+/* Reads checked values, brought up to date as their roles need. */
+static AK_ALWAYS_INLINE ak_status read_values(ak_instance *instance, unsigned int roles,
+                                              bool one_run, const unsigned int vr[], size_t nvr,
+                                              double values[], size_t n_values) {
     const ak_status status = update_for(instance, roles, vr, nvr);
-    for (size_t i = 0, k = 0; i < nvr; i++) {
-        if (vr[i] >= AK_MAX_VARIABLES) { /* checked above: time, past the value array */
-            values[k++] = instance->time;
-            continue;
-        }
-        for (unsigned int e = 0; e < instance->elements[vr[i]]; e++) {
-            values[k++] = instance->data.values[vr[i] + e];
-        }
-    }
-    return status;
-}
-
-/* The get of a run of consecutive value references of known variables, into *status; false
- * (nothing done) for any other. Inline: called with a constant nvr, the compiler inlines the
- * comparison and the copy instead of calling memcmp and memcpy. */
-static AK_ALWAYS_INLINE bool get_run(ak_instance *instance, const unsigned int vr[], size_t nvr,
-                                     double value[], ak_status *status) {
-    if (!consecutive(vr, nvr)) {
-        return false;
-    }
-    const unsigned int roles = ak_real_roles_of_run(instance, vr[0], nvr);
-    if ((roles & (1u << AK_REAL_ABSENT)) != 0) {
-        return false;
-    }
-    *status = update_for(instance, roles, vr, nvr);
-    ak_copy_values(value, &instance->data.values[vr[0]], nvr);
-    return true;
-}
-
-/* A run of four vectors of 3, the get masters most often make at a communication point (two
- * vectors in two frames): with this count a constant, the copy is inlined. Any other count
- * takes the same path with a variable count. */
-enum { USUAL_RUN = 12 };
-
-/* A get of a few runs (fmpy's record of every output skips the parameters among them) asked
- * again, as the instance kept it: its roles, its values gathered. False for any other get. */
-static bool get_kept(ak_instance *instance, const unsigned int vr[], size_t nvr, double value[],
-                     ak_status *status) {
-    const ak_kept_get *kept = &instance->kept_get;
-    if (nvr == 0 || nvr != kept->nvr || !ak_same_value_references(vr, kept->vr, nvr)) {
-        return false;
-    }
-    *status = update_for(instance, kept->roles, vr, nvr);
-    for (size_t i = 0; i < nvr; i++) {
-        value[i] = instance->data.values[vr[i]];
-    }
-    return true;
-}
-
-/* Keeps a get that ak_get_values answered (every value reference known) for get_kept. */
-static void keep_get(ak_instance *instance, const unsigned int vr[], size_t nvr) {
-    ak_kept_get *kept = &instance->kept_get;
-    kept->roles = 0;
-    for (size_t i = 0; i < nvr; i++) {
-        kept->roles |= 1u << ak_real_role_of(instance, vr[i]);
-    }
-    memcpy(kept->vr, vr, nvr * sizeof vr[0]);
-    kept->nvr = nvr;
-}
-
-ak_status ak_get_reals(ak_instance *instance, const ak_function_rule *call,
-                       const unsigned int vr[], size_t nvr, double value[]) {
-    /* The usual gets, untraced: consecutive value references of known variables (the count a
-     * constant for the goals' gets, docs/performance.md: four vectors, a quaternion), or the
-     * same few runs as the last get. */
-    ak_status status;
-    const bool untraced = ak_call_passes(instance, call) && vr != NULL && value != NULL;
-    if (untraced && (nvr == USUAL_RUN ? get_run(instance, vr, USUAL_RUN, value, &status)
-                     : (nvr == 4 ? get_run(instance, vr, 4, value, &status)
-                                 : get_run(instance, vr, nvr, value, &status)) ||
-                           get_kept(instance, vr, nvr, value, &status))) {
+    if (one_run) {
+        copy_values(values, &instance->data.values[vr[0]], n_values);
         return status;
     }
-    status = ak_get_values(instance, call, vr, nvr, value, nvr);
-    if (untraced && status != AK_STATUS_ERROR && nvr <= AK_MAX_VARIABLES) {
-        keep_get(instance, vr, nvr);
+    for (size_t i = 0, k = 0; i < nvr; i++) {
+        const unsigned int n = vr[i] < AK_MAX_VARIABLES ? instance->elements[vr[i]] : 0u;
+        if (n == 1) { /* FMI 2's scalars: no loop */
+            values[k++] = instance->data.values[vr[i]];
+        } else if (n == 0) { /* checked: time, past the value array */
+            values[k++] = instance->time;
+        } else {
+            copy_values(&values[k], &instance->data.values[vr[i]], n);
+            k += n;
+        }
     }
     return status;
+}
+
+static AK_NOINLINE ak_status get_checked(ak_instance *instance, const ak_function_rule *call,
+                                         const unsigned int vr[], size_t nvr, double values[],
+                                         size_t n_values) {
+    unsigned int roles;
+    bool one_run;
+    if (!ak_values_call_valid(instance, call, vr, nvr, values, n_values) ||
+        !check_get(instance, call->name, vr, nvr, n_values, &roles, &one_run)) {
+        return AK_STATUS_ERROR;
+    }
+    if (!ak_log_on(instance, AK_LOG_CALLS)) {
+        keep_request(&instance->kept_get, vr, nvr, n_values, roles, one_run);
+    }
+    return read_values(instance, roles, one_run, vr, nvr, values, n_values);
 }
 
 /* Whether vr[i] names values a set may write (inputs or parameters); else logs why not. */
@@ -364,55 +326,73 @@ static bool check_set(const ak_instance *instance, const char *function, const u
     return true;
 }
 
-/* Every argument checked first, then each value stored (traced, its input derivatives forgotten).
- * Out of line: the layers' usual sets stay small functions. */
-AK_NOINLINE ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
-                                    const unsigned int vr[], size_t nvr, const double values[],
-                                    size_t n_values) {
-    if (!ak_values_call_valid(instance, call, vr, nvr, values, n_values) ||
-        !check_set(instance, call->name, vr, nvr, values, n_values)) {
-        return AK_STATUS_ERROR;
-    }
-    for (size_t i = 0, k = 0; i < nvr; i++) {
-        for (unsigned int e = 0; e < instance->elements[vr[i]]; e++) {
-            ak_store(instance, call->name, vr[i] + e, values[k++]);
+ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
+                        const unsigned int vr[], size_t nvr, double values[], size_t n_values) {
+    /* The get of the last step asked again, untraced (every communication point's): known good. */
+    if (ak_call_passes(instance, call) && vr != NULL && values != NULL) {
+        const ak_kept_request *kept = &instance->kept_get;
+        /* The goals' gets (12 scalars; 4 arrays or a quaternion) with the count a constant, so
+         * that the compiler unrolls the comparison and the copy (docs/performance.md). */
+        if (nvr == 12 ? same_request(kept, vr, 12, n_values)
+            : nvr == 4 ? same_request(kept, vr, 4, n_values)
+                       : same_request(kept, vr, nvr, n_values)) {
+            return read_values(instance, kept->roles, kept->one_run, vr, nvr, values, n_values);
         }
     }
-    return AK_STATUS_OK;
+    return get_checked(instance, call, vr, nvr, values, n_values);
 }
 
-bool ak_store_inputs(ak_instance *instance, unsigned int first, const double value[], size_t n,
-                     size_t usual_n) {
-    /* The caller's usual count, and a vector's or a quaternion's, as constants: the compiler
-     * unrolls the check and the copy instead of calling memcpy. */
+/* Stores n finite values of consecutive inputs from first, or nothing (false) if one is not
+ * finite; marks the outputs stale when a bit changed. The counts of the goals' sets (a vector,
+ * every input) as constants, so that the compiler unrolls them (docs/performance.md). */
+static AK_ALWAYS_INLINE bool store_inputs(ak_instance *instance, unsigned int first,
+                                          const double values[], size_t n) {
     double *target = &instance->data.values[first];
-    const ak_store_result stored = n == usual_n ? ak_store_if_finite(target, value, usual_n)
-                                                : store_values(target, value, n);
+    const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
+    const ak_store_result stored = n == 3          ? ak_store_if_finite(target, values, 3)
+                                   : n == n_inputs ? ak_store_if_finite(target, values, n_inputs)
+                                                   : ak_store_if_finite(target, values, n);
     if (stored == AK_STORE_CHANGED) {
         ak_instance_inputs_changed(instance);
     }
     return stored != AK_STORE_REFUSED;
 }
 
-/* True when vr is a run first, first + 1, .. of inputs (value references 0 .. n_inputs - 1). */
-static AK_ALWAYS_INLINE bool inputs_run(const unsigned int vr[], size_t nvr, size_t n_inputs) {
-    return nvr > 0 && nvr <= n_inputs && vr[0] <= n_inputs - nvr && consecutive(vr, nvr);
+static AK_NOINLINE ak_status set_checked(ak_instance *instance, const ak_function_rule *call,
+                                         const unsigned int vr[], size_t nvr,
+                                         const double values[], size_t n_values) {
+    if (!ak_values_call_valid(instance, call, vr, nvr, values, n_values) ||
+        !check_set(instance, call->name, vr, nvr, values, n_values)) {
+        return AK_STATUS_ERROR;
+    }
+    bool inputs_run = nvr > 0 && !ak_log_on(instance, AK_LOG_CALLS);
+    for (size_t i = 0, k = 0; i < nvr; i++) {
+        inputs_run &= vr[i] == vr[0] + k && vr[i] < (unsigned int)AK_MODEL.n_inputs;
+        for (unsigned int e = 0; e < instance->elements[vr[i]]; e++) {
+            ak_store(instance, call->name, vr[i] + e, values[k++]);
+        }
+    }
+    if (inputs_run) { /* for the next set of the same inputs */
+        keep_request(&instance->kept_set, vr, nvr, n_values, 0, true);
+    }
+    return AK_STATUS_OK;
 }
 
-ak_status ak_set_reals(ak_instance *instance, const ak_function_rule *call,
-                       const unsigned int vr[], size_t nvr, const double value[]) {
-    /* The usual sets of an importer: a run of inputs in value-reference order (all of them, or
-     * one vector), finite, untraced, no input derivative to forget. With every input or a
-     * vector the count is a constant, so the compiler unrolls the comparison, the check and the
-     * copy. */
+ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
+                        const unsigned int vr[], size_t nvr, const double values[],
+                        size_t n_values) {
+    /* The set of the last step's inputs again (one run), untraced, no input derivative to
+     * forget: only the values need a check, done as they are stored; if one is not finite, the
+     * full check names it. One input array (FMI 3's usual set) is checked by one look-up. FMI 2's
+     * count of every input a constant, as in ak_get_values. */
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
-    if (ak_call_passes(instance, call) && !instance->data.any_input_derivative && vr != NULL &&
-        value != NULL &&
-        (nvr == n_inputs ? memcmp(vr, EVERY_VALUE_REFERENCE, n_inputs * sizeof vr[0]) == 0
-         : nvr == 3      ? inputs_run(vr, 3, n_inputs)
-                         : inputs_run(vr, nvr, n_inputs)) &&
-        ak_store_inputs(instance, vr[0], value, nvr, n_inputs)) {
+    if (ak_call_passes(instance, call) && vr != NULL && values != NULL &&
+        !instance->data.any_input_derivative &&
+        (nvr == 1 ? vr[0] < n_inputs && n_values > 0 && instance->elements[vr[0]] == n_values
+         : nvr == n_inputs ? same_request(&instance->kept_set, vr, n_inputs, n_values)
+                           : same_request(&instance->kept_set, vr, nvr, n_values)) &&
+        store_inputs(instance, vr[0], values, n_values)) {
         return AK_STATUS_OK;
     }
-    return ak_set_values(instance, call, vr, nvr, value, nvr);
+    return set_checked(instance, call, vr, nvr, values, n_values);
 }
