@@ -8,7 +8,13 @@ set(AK_LS_REF_WRITERS
     "${CMAKE_SOURCE_DIR}/examples/ls_ref.py")
 
 # Sets AK_LS_REF_COMMANDS in the caller: the COMMAND lines that write the files into package.
+# None in a sanitizer build: its binaries load only under the sanitizer's runtime, and its FMUs
+# serve the abuse tests (scripts/check_sanitizers.sh), which do not read the reference.
 function(ak_ls_ref_commands package unreferenced)
+  if(AK_SANITIZE)
+    set(AK_LS_REF_COMMANDS "" PARENT_SCOPE)
+    return()
+  endif()
   set(AK_LS_REF_COMMANDS
       COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/tools/zip_fmu.py" "${package}" "${unreferenced}"
       # as a module from the checkout: the demo's .venv has no editable install of the project
