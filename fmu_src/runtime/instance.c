@@ -180,7 +180,11 @@ ak_status ak_instance_update(ak_instance *instance, ak_group upto) {
     const ak_eval_status status =
         ak_outputs_update(&instance->outputs, &instance->data, in_initialization, upto, &ran);
     if (ran != 0 && ak_log_on(instance, AK_LOG_CALLS)) {
-        if (ran & AK_RAN_MAIN) {
+        if ((ran & AK_RAN_MAIN) && status == AK_EVAL_FAILED) { /* the model logged why */
+            ak_log(instance, AK_LOG_CALLS, AK_STATUS_DISCARD,
+                   "kinematics evaluation %lu refused: the outputs keep their last valid values",
+                   instance->outputs.evaluations);
+        } else if (ran & AK_RAN_MAIN) {
             ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "kinematics evaluated (evaluation %lu%s)",
                    instance->outputs.evaluations,
                    (ran & AK_RAN_ALL) ? ", with the lazy outputs" : "");

@@ -225,7 +225,7 @@ static AK_ALWAYS_INLINE ak_status read_values(ak_instance *instance, unsigned in
             values[k++] = instance->data.values[vr[i]];
         } else if (n == 0) { /* checked: time, past the value array */
             values[k++] = instance->time;
-        } else {
+        } else if (k + n <= n_values) { /* checked already; said for gcc's -Wstringop-overflow */
             copy_values(&values[k], &instance->data.values[vr[i]], n);
             k += n;
         }

@@ -459,6 +459,8 @@ def refused(instance, inputs, message):
     status, kept = read_raw(instance)
     assert status == 2  # Discard
     assert any(message in m for _, _, m in instance.messages[n:]), instance.messages[n:]
+    calls = [m for _, _, m in instance.messages[n:] if "kinematics evaluat" in m]
+    assert len(calls) == 1 and "refused: the outputs keep their last valid values" in calls[0]
     assert bits(kept) == bits(before)
     assert set_inputs(instance, *OTHER) == 0
     after = outputs(instance)
