@@ -37,10 +37,7 @@ def attitude_sequences_h():
               " * there is no sequence. */",
               "static const ak_attitude_angles_function ANGLES_OF_SEQUENCE[2][2][3][3] = {"]
     for name in project.SEQUENCES:
-        axes = project.sequence_axes(name)
-        kind = "AK_SPACE_FIXED" if name.startswith("space") else "AK_BODY_FIXED"
-        proper = int(project.sequence_is_proper_euler(name))
-        lines.append(f"    [{kind}][{proper}][{axes[0] - 1}][{axes[1] - 1}] = angles_{name},")
+        lines.append(f"    {project.sequence_table_index(name)} = angles_{name},")
     lines += ["};", ""]
     return "\n".join(lines)
 
@@ -65,10 +62,7 @@ def attitude_sines_sequences_h():
               "static bool (*const SINES_OF_SEQUENCE[2][2][3][3])(double R[3][3], double sin_theta[3],",
               "                                                   double cos_theta[3]) = {"]
     for name in project.SEQUENCES:
-        axes = project.sequence_axes(name)
-        kind = "AK_SPACE_FIXED" if name.startswith("space") else "AK_BODY_FIXED"
-        proper = int(project.sequence_is_proper_euler(name))
-        lines.append(f"    [{kind}][{proper}][{axes[0] - 1}][{axes[1] - 1}] = sines_{name},")
+        lines.append(f"    {project.sequence_table_index(name)} = sines_{name},")
     lines += ["};", ""]
     return "\n".join(lines)
 

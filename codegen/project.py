@@ -38,6 +38,14 @@ def sequence_is_proper_euler(name):
     return name[-3:] in PROPER_EULER
 
 
+def sequence_table_index(name):
+    """The C designator of the sequence in the core's tables by its facts (kind, proper Euler,
+    first and second axis, 0-based): "[AK_BODY_FIXED][0][0][1]" for body123."""
+    axes = sequence_axes(name)
+    kind = "AK_SPACE_FIXED" if name.startswith("space") else "AK_BODY_FIXED"
+    return f"[{kind}][{int(sequence_is_proper_euler(name))}][{axes[0] - 1}][{axes[1] - 1}]"
+
+
 def sequence_description(name):
     kind = "body-fixed" if name.startswith("body") else "space-fixed"
     order = "-".join(name[-3:])

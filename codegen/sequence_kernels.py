@@ -313,10 +313,7 @@ def kinematics_rates_sequences_c():
         table.append(pair)
     lines.append("ak_sequence_rates *const AK_SEQUENCE_RATES[2][2][3][3][2] = {")
     for name, (fixed, body) in zip(project.SEQUENCES, table):
-        axes = project.sequence_axes(name)
-        kind = "AK_SPACE_FIXED" if name.startswith("space") else "AK_BODY_FIXED"
-        proper = int(project.sequence_is_proper_euler(name))
-        lines.append(f"    [{kind}][{proper}][{axes[0] - 1}][{axes[1] - 1}] = {{{fixed}, {body}}},")
+        lines.append(f"    {project.sequence_table_index(name)} = {{{fixed}, {body}}},")
     lines += ["};", ""]
     return "\n".join(lines)
 
