@@ -1,4 +1,4 @@
-/* The anchors of issue 24 for every sequence: omega_fixed, omega_body, alpha_fixed, alpha_body
+/* The anchors for every sequence: omega_fixed, omega_body, alpha_fixed, alpha_body
  * (y[0..11]) in closed form, generated ONCE by bench/anchors_sequences.py (sympy, from
  * elementary rotation matrices; nothing of the FMU's code) and frozen on purpose: an
  * anchor must not move with the code it judges. Do not edit; do not regenerate but to

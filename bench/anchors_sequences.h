@@ -1,4 +1,4 @@
-/* The per-sequence anchors of issue 24 (bench/anchors_sequences.c, generated once by
+/* The per-sequence anchors (bench/anchors_sequences.c, generated once by
  * bench/anchors_sequences.py and frozen): omega_fixed, omega_body, alpha_fixed, alpha_body of one
  * rotation sequence in closed form, y[0..11], with glibc's sin and cos. */
 #ifndef ANGULAR_KINEMATICS_ANCHORS_SEQUENCES_H

@@ -1,6 +1,6 @@
 """Writes bench/anchors_sequences.c: omega and alpha of each of the 24 rotation sequences in closed
 form, derived by sympy from elementary rotation matrices (nothing of the FMU's code), the anchors
-"the same formula for each sequence" of issue 24 (docs/performance.md). Run once and committed:
+"the same formula for each sequence" (docs/performance.md). Run once and committed:
 the file is an anchor and is frozen on purpose (its output depends on sympy's version; rerunning
 it is only needed to change the anchors, which then are new anchors).
 
@@ -79,7 +79,7 @@ def kernel(name):
 
 
 def main():
-    print("/* The anchors of issue 24 for every sequence: omega_fixed, omega_body, alpha_fixed,"
+    print("/* The anchors for every sequence: omega_fixed, omega_body, alpha_fixed,"
           " alpha_body")
     print(" * (y[0..11]) in closed form, generated ONCE by bench/anchors_sequences.py (sympy, from")
     print(" * elementary rotation matrices; nothing of the FMU's code) and frozen on purpose: an")

@@ -1,4 +1,4 @@
-/* The anchors of bench_attitude (issue 24): the bare quaternion update for a constant omega and
+/* The anchors of bench_attitude: the bare quaternion update for a constant omega and
  * the angles of body123 from it, written out once here and frozen. They are copies of the core's
  * ak_attitude_step (with c = {omega, 0, 0, 0}, body frame), ak_quat_to_matrix and
  * ak_attitude_angles (body123) as of 0.3.0, with glibc's sin, cos and atan2: the FMU's core will

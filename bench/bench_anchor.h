@@ -1,4 +1,4 @@
-/* The anchor of the AngularKinematics drivers (bench_fmu.c, bench_fmi3.c; issue 24): the
+/* The anchor of the AngularKinematics drivers (bench_fmu.c, bench_fmi3.c): the
  * hand-written body-fixed 1-2-3 formula of tests/c/kinematics_123.c, the project's test reference
  * and the physical limit of the main use. It does not move with the FMU or its general core, so a
  * ratio to it shows a regression as one. Needs bench_inputs.h, bench_timing.h, kinematics_123.h. */

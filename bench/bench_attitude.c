@@ -1,4 +1,4 @@
-/* Benchmark of AttitudePropagator (issue 14, bench/run.sh): one co-simulation communication
+/* Benchmark of AttitudePropagator (bench/run.sh): one co-simulation communication
  * point next to the bare quaternion update, in the same run.
  *
  *   bare update: the frozen copy (attitude_anchor.h) of the core's step for constant omega over
@@ -7,7 +7,7 @@
  *   FMU step:    fmi2SetReal of omega[1..3], fmi2DoStep, fmi2GetReal of q[1..4] (and, in a
  *                second loop, theta[1..3] too), through the AttitudePropagator.so loaded with
  *                dlopen; with --previous, the same loops through the previous release's .so.
- * The anchors are the bare update and the update plus the angle extraction (issue 24), frozen
+ * The anchors are the bare update and the update plus the angle extraction, frozen
  * in bench/attitude_anchor.c so that they do not move with the FMU's core; before timing, they
  * are checked against the core's ak_attitude_step and ak_attitude_angles (at most ANCHOR_ULPS
  * apart). Both loops cycle through a table of 256 angular velocities, alternate within each

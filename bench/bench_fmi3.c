@@ -8,7 +8,7 @@
  *   - FMI 3 cycle: three fmi3SetFloat64, one per input array (theta, theta_dot, theta_ddot),
  *     fmi3DoStep, one fmi3GetFloat64 of the four output arrays omega_fixed .. alpha_body
  *     (build/fmu3/binaries/x86_64-linux/AngularKinematics.so); and the same with one
- *     fmi3SetFloat64 of the three input arrays, the cycle as issue 24 states it;
+ *     fmi3SetFloat64 of the three input arrays, the cycle of the speed goal;
  *   - with PREV2_SO and PREV3_SO: the same two cycles of the previous release's binaries;
  *   - with --passthrough SO and --passthrough3 SO: the same cycles (9 inputs, 12 outputs, the
  *     same calls) through the pass-through FMUs (bench_passthrough.h), what the calls cost with
@@ -170,7 +170,7 @@ static double time_fmi3(void *library, long n) {
     return elapsed / (double)n;
 }
 
-/* The same cycle with the three input arrays in one fmi3SetFloat64, as issue 24 states it (a loop
+/* The same cycle with the three input arrays in one fmi3SetFloat64, as the speed goal states it (a loop
  * of its own, so that time_fmi3's, which the guard's record was taken with, stays as it was). */
 __attribute__((always_inline)) static inline double time_fmi3_one_set(void *library, long n) {
     fmi3Instance c = FUNCTION(fmi3InstantiateCoSimulationTYPE, library, "fmi3InstantiateCoSimulation")(

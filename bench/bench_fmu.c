@@ -3,7 +3,7 @@
  *
  * It loads the built AngularKinematics.so with dlopen, as a master does, and in the same run
  * times
- *   - the anchor every ratio is to: the hand-written 1-2-3 formula (bench_anchor.h, issue 24);
+ *   - the anchor every ratio is to: the hand-written 1-2-3 formula (bench_anchor.h);
  *   - the general core (a figure of its own), ak_general_angular_kinematics for body123 (the
  *     FMU's default sequence),
  *     linked from the same static library (same compiler, same flags) that the FMU is built from;

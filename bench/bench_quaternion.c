@@ -9,7 +9,7 @@
  *     interface;
  *   - the anchor: the hand-written body123 formula on the same rows (bench/quaternion_anchor.c,
  *     frozen).
- * Goal (issue 30): the cycle at most 1.3 x (pass-through cycle + formula); the ratio quoted is the
+ * Goal: the cycle at most 1.3 x (pass-through cycle + formula); the ratio quoted is the
  * median of the per-repeat ratios. Two kinds of rows (256 each, cycled; consecutive rows differ in
  * every input, so every step evaluates):
  *   random: q with components in [-1, 1] (|q| from 0.25 on), q_dot in [-5, 5], q_ddot in

@@ -1,4 +1,4 @@
-/* Benchmark driver for issue 24's goals beyond body123 (docs/performance.md):
+/* Benchmark driver for the speed goals beyond body123 (docs/performance.md):
  *   - for each of the 24 sequences, the FMI 2 cycle (fmi2SetReal of the 9 inputs, fmi2DoStep,
  *     fmi2GetReal of the 12 omega/alpha outputs; the `sequence` parameter set before
  *     initialization) against that sequence's anchor, its closed-form formula generated once by

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The speed regression guard (issue 24, item 3; docs/performance.md): callgrind instructions per
+# The speed regression guard (docs/performance.md): callgrind instructions per
 # cycle of each model and FMI version in build/ against the previous release's, recorded in
 # bench/callgrind_previous_release.txt. Fails (exit 1) when any rises more than 3 %. Instruction
 # counts, not wall time, so a loaded CI machine does not matter; runs of 2560 and 12800 steps

@@ -28,7 +28,7 @@
 # body sampled every 0.01 s, as a co-simulation feeds it); each times the pass-through FMU
 # (bench/passthrough/: FMI 2 and FMI 3, inputs copied to outputs) with the same numbers of
 # inputs, outputs and calls, alternately with the rest, and prints it beside every ratio.
-# The anchors every ratio is to do not move with the FMU (issue 24): the hand-written 1-2-3
+# The anchors every ratio is to do not move with the FMU: the hand-written 1-2-3
 # formula (tests/c/kinematics_123.c) and the bare quaternion update; the general core is a figure
 # of its own. Unless --quick or --no-previous, the previous release's binaries
 # (bench/previous_release.sh, a scratch worktree) are timed alternately with the current build.

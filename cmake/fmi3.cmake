@@ -1,4 +1,4 @@
-# The FMI 3.0 FMUs (issue 12): per model a shared library <Model>_fmi3 (output name <Model>) from
+# The FMI 3.0 FMUs: per model a shared library <Model>_fmi3 (output name <Model>) from
 # the same kinematics core and model folder as the FMI 2 one, with the FMI 3 layer fmu_src/fmi3/
 # instead of fmu_src/fmi2/; staged in build*/fmu3/binaries/<FMI 3 platform>/ and packaged, by the
 # build that packages (preset release), as dist/fmi3/<Model>.fmu with the binaries of the other

@@ -1,4 +1,4 @@
-/* The project's own elementary functions: the same bits on every platform (issue 23). The models
+/* The project's own elementary functions: the same bits on every platform. The models
  * call these instead of the platform's libm, whose sin, cos, atan and atan2 round differently on
  * glibc, mingw-w64 and macOS. Methods, accuracy and the commands that measure it:
  * docs/elementary.md. Pure IEEE double arithmetic (no fma, no x87: -ffp-contract=off, and SSE2
