@@ -1,11 +1,30 @@
-/* FMI 3.0 derivatives: output derivatives (maxOutputDerivativeOrder = 1) and directional and
- * adjoint derivatives (providesDirectionalDerivatives, providesAdjointDerivatives), over
- * runtime/derivatives.c: this file checks the arguments and expands arrays into their elements.
- * A model without one of them gets the function refused with a message naming the flag its
- * modelDescription.xml leaves false. */
+/* FMI 3.0 output, directional and adjoint derivatives over runtime/derivatives.c, and the
+ * per-element dependencies: this file checks the arguments and expands arrays into elements. */
 #include <math.h>
 
 #include "fmi3_layer.h"
+
+/* The array of vr (list_name[index]) if it has this causality; else NULL after logging why. */
+static const ak3_array *array_of_causality(const ak_instance *instance, const char *function,
+                                           const char *list_name, size_t index, unsigned int vr,
+                                           ak_causality causality) {
+    const ak3_array *array = ak3_array_of(vr);
+    if (array == NULL) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s[%zu] = %u is not a value reference of this FMU's FMI 3 variables",
+               function, list_name, index, vr);
+        return NULL;
+    }
+    const ak_causality found = AK_MODEL.variables[vr].causality;
+    if (found != causality) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s[%zu] = %u is %s, %s %s; expected an %s", function, list_name, index, vr,
+               array->name, found == AK_CAUSALITY_PARAMETER ? "a" : "an",
+               ak_causality_name(found), ak_causality_name(causality));
+        return NULL;
+    }
+    return array;
+}
 
 /* The highest order fmi3GetOutputDerivatives gives: maxOutputDerivativeOrder. */
 enum { MAX_OUTPUT_DERIVATIVE_ORDER = 1 };
@@ -20,19 +39,24 @@ static bool arrays_valid(const ak_instance *instance, const char *function, cons
     for (size_t i = 0; i < n; i++) {
         const ak3_array *array = ak3_array_of(vr[i]);
         if (array == NULL || also == NULL || ak_state_index(also, vr[i]) < 0) {
-            array = ak3_array_of_causality(instance, function, list_name, i, vr[i], causality);
+            array = array_of_causality(instance, function, list_name, i, vr[i], causality);
         }
         if (array == NULL) {
             return false;
         }
         total += array->n_elements;
     }
-    *n_elements = ak3_expand(vr, n, elements, AK_MAX_VARIABLES);
     if (total > AK_MAX_VARIABLES) { /* the same variable many times: more than the model has */
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: the %zu %s have %zu elements; at most %d in one call", function, n, list_name,
                total, AK_MAX_VARIABLES);
         return false;
+    }
+    *n_elements = 0;
+    for (size_t i = 0; i < n; i++) {
+        for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements; e++) {
+            elements[(*n_elements)++] = vr[i] + e;
+        }
     }
     return true;
 }
@@ -138,4 +162,87 @@ fmi3Status fmi3GetAdjointDerivative(fmi3Instance c, const fmi3ValueReference unk
     return derivative(c, AK3_GET_ADJOINT_DERIVATIVE, "providesAdjointDerivatives=\"false\"", true,
                       unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
                       nSensitivity);
+}
+
+/* Per-element dependencies (FMI 3, section 2.2.10): element indices are 1-based, row-major, 0 for
+ * a scalar. The variable table lists the inputs only, so a model with states does not provide
+ * them. */
+/* The output array of a call for dependencies (valid, and provided); NULL after logging why. */
+static const ak3_array *dependent_array(const ak_instance *instance, ak3_function function,
+                                        const char *list_name, unsigned int vr) {
+    if (!fmi3_allowed(instance, function)) {
+        return NULL;
+    }
+    if (AK_MODEL.n_states != 0) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: not provided by %s (modelDescription.xml: providesPerElementDependencies="
+               "\"false\"; <ModelStructure> gives the dependencies per array)",
+               fmi3_name(function), AK_MODEL.model_identifier);
+        return NULL;
+    }
+    return array_of_causality(instance, fmi3_name(function), list_name, 0, vr,
+                              AK_CAUSALITY_OUTPUT);
+}
+
+static size_t dependency_count(const ak3_array *array) {
+    size_t n = 0;
+    for (unsigned int e = 0; e < array->n_elements; e++) {
+        n += AK_MODEL.variables[array->first_vr + e].n_dependencies;
+    }
+    return n;
+}
+
+static size_t element_index(const ak3_array *array, unsigned int scalar_vr) {
+    return array->n_dimensions == 0 ? 0 : (size_t)(scalar_vr - array->first_vr) + 1;
+}
+
+fmi3Status fmi3GetNumberOfVariableDependencies(fmi3Instance c, fmi3ValueReference valueReference,
+                                               size_t *nDependencies) {
+    const ak3_function self = AK3_GET_NUMBER_OF_VARIABLE_DEPENDENCIES;
+    const ak3_array *array = dependent_array(c, self, "valueReference", valueReference);
+    if (array == NULL || !ak_not_null(c, fmi3_name(self), nDependencies, "nDependencies")) {
+        return fmi3Error;
+    }
+    *nDependencies = dependency_count(array);
+    return fmi3OK;
+}
+
+fmi3Status fmi3GetVariableDependencies(fmi3Instance c, fmi3ValueReference dependent,
+                                       size_t elementIndicesOfDependent[],
+                                       fmi3ValueReference independents[],
+                                       size_t elementIndicesOfIndependents[],
+                                       fmi3DependencyKind dependencyKinds[],
+                                       size_t nDependencies) {
+    const ak_instance *instance = c;
+    const char *name = fmi3_name(AK3_GET_VARIABLE_DEPENDENCIES);
+    const ak3_array *array =
+        dependent_array(instance, AK3_GET_VARIABLE_DEPENDENCIES, "dependent", dependent);
+    if (array == NULL ||
+        !ak_given(instance, name, nDependencies, "nDependencies", elementIndicesOfDependent,
+                  "elementIndicesOfDependent") ||
+        !ak_given(instance, name, nDependencies, "nDependencies", independents, "independents") ||
+        !ak_given(instance, name, nDependencies, "nDependencies", elementIndicesOfIndependents,
+                  "elementIndicesOfIndependents") ||
+        !ak_given(instance, name, nDependencies, "nDependencies", dependencyKinds,
+                  "dependencyKinds")) {
+        return fmi3Error;
+    }
+    if (nDependencies != dependency_count(array)) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: nDependencies = %zu, but %s has %zu (fmi3GetNumberOfVariableDependencies)",
+               name, nDependencies, array->name, dependency_count(array));
+        return fmi3Error;
+    }
+    size_t k = 0;
+    for (unsigned int e = 0; e < array->n_elements; e++) {
+        const ak_variable *element = &AK_MODEL.variables[array->first_vr + e];
+        for (size_t d = 0; d < element->n_dependencies; d++, k++) {
+            const ak3_array *input = &AK3_ARRAYS[element->dependencies[d]];
+            elementIndicesOfDependent[k] = element_index(array, array->first_vr + e);
+            independents[k] = input->first_vr;
+            elementIndicesOfIndependents[k] = element_index(input, element->dependencies[d]);
+            dependencyKinds[k] = fmi3Dependent;
+        }
+    }
+    return fmi3OK;
 }

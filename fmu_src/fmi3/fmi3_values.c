@@ -1,10 +1,6 @@
-/* FMI 3.0 getters and setters. A value reference names a whole array (theta: 3 values, R: 9,
- * row-major) and nValues must be exactly the number of elements of all the value references
- * given. Every call checks all of its arguments before it touches a value, so a rejected call
- * changes nothing. Float64 holds the Real variables (and the independent variable time, which
- * can be read only); Int64 the Enumerations (FMI 3, section 2.4.7.1); no variable has another
- * type (fmi3_unsupported.c). Float64 values are the runtime's (ak_get_values, ak_set_values), in
- * this layer's words (FMI3_LAYER). */
+/* FMI 3.0 getters and setters. A value reference names a whole array and nValues counts all
+ * their elements. Float64 holds the Real variables and time (read only), Int64 the Enumerations
+ * (FMI 3, section 2.4.7.1); no variable has another type (fmi3_unsupported.c). */
 #include "fmi3_layer.h"
 
 static const char *type_name(ak_type type) {
@@ -33,27 +29,6 @@ static const ak3_array *array_of_type(const ak_instance *instance, const char *f
     return array;
 }
 
-const ak3_array *ak3_array_of_causality(const ak_instance *instance, const char *function,
-                                        const char *list_name, size_t index, unsigned int vr,
-                                        ak_causality causality) {
-    const ak3_array *array = ak3_array_of(vr);
-    if (array == NULL) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                "%s: %s[%zu] = %u is not a value reference of this FMU's FMI 3 variables",
-                function, list_name, index, vr);
-        return NULL;
-    }
-    const ak_causality found = AK_MODEL.variables[vr].causality;
-    if (found != causality) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
-                function, list_name, index, vr, array->name,
-                found == AK_CAUSALITY_PARAMETER ? "a" : "an", ak_causality_name(found),
-                ak_causality_name(causality));
-        return NULL;
-    }
-    return array;
-}
-
 static const char *name_of_vr(unsigned int vr) {
     if (vr == AK3_TIME_VALUE_REFERENCE) {
         return "time";
@@ -74,16 +49,6 @@ bool ak3_count_matches(const ak_instance *instance, const char *function, const 
             n_vr > 1 ? " .. " : "", n_vr > 1 ? name_of_vr(vr[n_vr - 1]) : "", total,
             n < total ? "few" : "many");
     return false;
-}
-
-size_t ak3_expand(const unsigned int vr[], size_t n, unsigned int elements[], size_t capacity) {
-    size_t k = 0;
-    for (size_t i = 0; i < n; i++) {
-        for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements && k < capacity; e++) {
-            elements[k++] = vr[i] + e;
-        }
-    }
-    return k;
 }
 
 unsigned int ak3_elements_at(unsigned int vr) {
@@ -154,7 +119,8 @@ fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
     }
     for (size_t i = 0; i < nvr; i++) {
         /* An Int64 far out of range becomes a large double, which the parameter range refuses. */
-        if (!ak_parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i]], (double)values[i])) {
+        if (!ak_parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i]],
+                                   (double)values[i])) {
             return fmi3Error;
         }
     }
