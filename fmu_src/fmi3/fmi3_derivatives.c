@@ -64,76 +64,77 @@ static bool arrays_valid(const ak_instance *instance, const char *function, cons
 fmi3Status fmi3GetOutputDerivatives(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                                     const fmi3Int32 orders[], fmi3Float64 values[],
                                     size_t nValues) {
-    ak_instance *instance = c;
     const char *self = fmi3_name(AK3_GET_OUTPUT_DERIVATIVES);
-    if (!fmi3_allowed(instance, AK3_GET_OUTPUT_DERIVATIVES)) {
+    if (!fmi3_allowed(c, AK3_GET_OUTPUT_DERIVATIVES)) {
         return fmi3Error;
     }
     if (AK_MODEL.output_derivatives == NULL) {
-        return fmi3_status(ak_not_provided(instance, self, "maxOutputDerivativeOrder=\"0\""));
+        return fmi3_status(ak_not_provided(c, self, "maxOutputDerivativeOrder=\"0\""));
     }
     unsigned int elements[AK_MAX_VARIABLES];
     size_t n = 0;
-    if (!ak_given(instance, self, nvr, "nValueReferences", vr, "valueReferences") ||
-        !ak_given(instance, self, nvr, "nValueReferences", orders, "orders") ||
-        !ak_given(instance, self, nValues, "nValues", values, "values") ||
-        !arrays_valid(instance, self, "valueReferences", vr, nvr, AK_CAUSALITY_OUTPUT, NULL,
+    if (!ak_given(c, self, nvr, "nValueReferences", vr, "valueReferences") ||
+        !ak_given(c, self, nvr, "nValueReferences", orders, "orders") ||
+        !ak_given(c, self, nValues, "nValues", values, "values") ||
+        !arrays_valid(c, self, "valueReferences", vr, nvr, AK_CAUSALITY_OUTPUT, NULL,
                       elements, &n)) {
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
         if (orders[i] < 1 || orders[i] > MAX_OUTPUT_DERIVATIVE_ORDER) {
-            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+            ak_log(c, AK_LOG_ERROR, AK_STATUS_ERROR,
                    "%s: orders[%zu] = %d for %s: this FMU gives order %d only "
                    "(maxOutputDerivativeOrder)",
                    self, i, (int)orders[i], AK3_ARRAYS[vr[i]].name, MAX_OUTPUT_DERIVATIVE_ORDER);
             return fmi3Error;
         }
     }
-    if (!ak3_count_matches(instance, self, "nValues", nValues, n, vr, nvr)) {
+    if (!ak3_count_matches(c, self, "nValues", nValues, n, vr, nvr)) {
         return fmi3Error;
     }
-    return fmi3_status(ak_output_derivatives(instance, self, elements, n, values));
+    return fmi3_status(ak_output_derivatives(c, self, elements, n, values));
 }
 
 /* sensitivity = J seed (directional) or J^T seed (adjoint), J the rows of the unknowns'
  * elements and the columns of the knowns' elements. */
-static fmi3Status derivative(fmi3Instance c, ak3_function function, const char *flag, bool adjoint,
-                             const fmi3ValueReference unknowns[], size_t nUnknowns,
-                             const fmi3ValueReference knowns[], size_t nKnowns,
+static fmi3Status derivative(fmi3Instance c, bool adjoint, const fmi3ValueReference unknowns[],
+                             size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
                              const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
                              size_t nSensitivity) {
-    ak_instance *instance = c;
+    const ak3_function function =
+        adjoint ? AK3_GET_ADJOINT_DERIVATIVE : AK3_GET_DIRECTIONAL_DERIVATIVE;
     const char *self = fmi3_name(function);
-    if (!fmi3_allowed(instance, function)) {
+    if (!fmi3_allowed(c, function)) {
         return fmi3Error;
     }
     if (AK_MODEL.jacobian == NULL) {
-        return fmi3_status(ak_not_provided(instance, self, flag));
+        return fmi3_status(ak_not_provided(c, self,
+                                           adjoint ? "providesAdjointDerivatives=\"false\""
+                                                   : "providesDirectionalDerivatives=\"false\""));
     }
     unsigned int rows[AK_MAX_VARIABLES], columns[AK_MAX_VARIABLES];
     size_t n_rows = 0, n_columns = 0;
-    if (!ak_given(instance, self, nUnknowns, "nUnknowns", unknowns, "unknowns") ||
-        !ak_given(instance, self, nKnowns, "nKnowns", knowns, "knowns") ||
-        !ak_given(instance, self, nSeed, "nSeed", seed, "seed") ||
-        !ak_given(instance, self, nSensitivity, "nSensitivity", sensitivity, "sensitivity") ||
-        !arrays_valid(instance, self, "unknowns", unknowns, nUnknowns, AK_CAUSALITY_OUTPUT,
+    if (!ak_given(c, self, nUnknowns, "nUnknowns", unknowns, "unknowns") ||
+        !ak_given(c, self, nKnowns, "nKnowns", knowns, "knowns") ||
+        !ak_given(c, self, nSeed, "nSeed", seed, "seed") ||
+        !ak_given(c, self, nSensitivity, "nSensitivity", sensitivity, "sensitivity") ||
+        !arrays_valid(c, self, "unknowns", unknowns, nUnknowns, AK_CAUSALITY_OUTPUT,
                       AK_MODEL.derivative_vrs, rows, &n_rows) ||
-        !arrays_valid(instance, self, "knowns", knowns, nKnowns, AK_CAUSALITY_INPUT,
+        !arrays_valid(c, self, "knowns", knowns, nKnowns, AK_CAUSALITY_INPUT,
                       AK_MODEL.state_vrs, columns, &n_columns)) {
         return fmi3Error;
     }
     /* Directional: seed per known element, sensitivity per unknown element; adjoint: reversed. */
-    if (!ak3_count_matches(instance, self, "nSeed", nSeed, adjoint ? n_rows : n_columns,
+    if (!ak3_count_matches(c, self, "nSeed", nSeed, adjoint ? n_rows : n_columns,
                            adjoint ? unknowns : knowns, adjoint ? nUnknowns : nKnowns) ||
-        !ak3_count_matches(instance, self, "nSensitivity", nSensitivity,
+        !ak3_count_matches(c, self, "nSensitivity", nSensitivity,
                            adjoint ? n_columns : n_rows, adjoint ? knowns : unknowns,
                            adjoint ? nKnowns : nUnknowns)) {
         return fmi3Error;
     }
     for (size_t j = 0; j < nSeed; j++) {
         if (!isfinite(seed[j])) {
-            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: seed[%zu] = %g is not finite",
+            ak_log(c, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: seed[%zu] = %g is not finite",
                    self, j, seed[j]);
             return fmi3Error;
         }
@@ -142,7 +143,7 @@ static fmi3Status derivative(fmi3Instance c, ak3_function function, const char *
         sensitivity[j] = 0.0;
     }
     const ak_status status =
-        ak_derivative(instance, rows, n_rows, columns, n_columns, seed, sensitivity, adjoint);
+        ak_derivative(c, rows, n_rows, columns, n_columns, seed, sensitivity, adjoint);
     return status == AK_STATUS_DISCARD ? fmi3Discard : fmi3OK;
 }
 
@@ -150,24 +151,20 @@ fmi3Status fmi3GetDirectionalDerivative(fmi3Instance c, const fmi3ValueReference
                                         size_t nUnknowns, const fmi3ValueReference knowns[],
                                         size_t nKnowns, const fmi3Float64 seed[], size_t nSeed,
                                         fmi3Float64 sensitivity[], size_t nSensitivity) {
-    return derivative(c, AK3_GET_DIRECTIONAL_DERIVATIVE,
-                      "providesDirectionalDerivatives=\"false\"", false, unknowns, nUnknowns,
-                      knowns, nKnowns, seed, nSeed, sensitivity, nSensitivity);
+    return derivative(c, false, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
+                      nSensitivity);
 }
 
 fmi3Status fmi3GetAdjointDerivative(fmi3Instance c, const fmi3ValueReference unknowns[],
                                     size_t nUnknowns, const fmi3ValueReference knowns[],
                                     size_t nKnowns, const fmi3Float64 seed[], size_t nSeed,
                                     fmi3Float64 sensitivity[], size_t nSensitivity) {
-    return derivative(c, AK3_GET_ADJOINT_DERIVATIVE, "providesAdjointDerivatives=\"false\"", true,
-                      unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
+    return derivative(c, true, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
                       nSensitivity);
 }
 
-/* Per-element dependencies (FMI 3, section 2.2.10): element indices are 1-based, row-major, 0 for
- * a scalar. The variable table lists the inputs only, so a model with states does not provide
- * them. */
-/* The output array of a call for dependencies (valid, and provided); NULL after logging why. */
+/* Per-element dependencies (FMI 3, section 2.2.10). The variable table lists the inputs only, so
+ * a model with states does not provide them. The output array asked for; NULL after logging. */
 static const ak3_array *dependent_array(const ak_instance *instance, ak3_function function,
                                         const char *list_name, unsigned int vr) {
     if (!fmi3_allowed(instance, function)) {
@@ -192,6 +189,7 @@ static size_t dependency_count(const ak3_array *array) {
     return n;
 }
 
+/* 1-based in the array's row-major order, 0 for a scalar. */
 static size_t element_index(const ak3_array *array, unsigned int scalar_vr) {
     return array->n_dimensions == 0 ? 0 : (size_t)(scalar_vr - array->first_vr) + 1;
 }

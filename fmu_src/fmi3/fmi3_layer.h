@@ -121,12 +121,9 @@ static inline fmi3Status fmi3_status(ak_status status) {
     return (fmi3Status)status;
 }
 
-/* The layer's side of ak_layer (fmi3_values.c). */
+/* True when n, the caller's count of values, is the number of elements of the n_vr arrays
+ * (total); else logs naming the function, the count and the variables. */
 bool ak3_count_matches(const ak_instance *instance, const char *function, const char *count_name,
                        size_t n, size_t total, const unsigned int vr[], size_t n_vr);
-unsigned int ak3_elements_at(unsigned int vr);
-const char *ak3_name_of(unsigned int vr);
-void ak3_refuse_real(const ak_instance *instance, const char *function, size_t index,
-                     unsigned int vr, bool set);
 
 #endif

@@ -1,62 +1,8 @@
-/* FMI 3.0 entry points of the instance life cycle and its FMU states, and what the layer tells
- * the runtime of itself (FMI3_LAYER). */
+/* FMI 3.0 entry points of the instance life cycle and its FMU states. */
 #include <stdlib.h>
 #include <string.h>
 
 #include "fmi3_layer.h"
-
-/* Unlike FMI 2's, FMI 3's logMessage takes the message, not a printf format. */
-static void send(const ak_instance *instance, ak_log_category category, ak_status status,
-                 const char *message) {
-    const fmi3_instance *self = (const fmi3_instance *)instance;
-    self->log_message(self->environment, fmi3_status(status), AK_LOG_CATEGORY_NAMES[category],
-                      message);
-}
-
-static void *allocate(const ak_instance *instance, size_t size) {
-    (void)instance;
-    return calloc(1, size);
-}
-
-static void release(const ak_instance *instance, void *memory) {
-    (void)instance;
-    free(memory);
-}
-
-const ak_layer FMI3_LAYER = {
-    .state_names = {"Instantiated", "Configuration Mode", "Initialization Mode", "Event Mode",
-                    "Step Mode", "Continuous-Time Mode", "Reconfiguration Mode", "Terminated",
-                    "Step In Progress", "Step Failed", "Step Canceled"},
-    .other_interface = {"not available to this instance, made by fmi3InstantiateModelExchange",
-                        "not available to this instance, made by fmi3InstantiateCoSimulation "
-                        "without Event Mode"},
-    .vr_name = "valueReferences",
-    .vr_count_name = "nValueReferences",
-    .values_name = "values",
-    .values_count_name = "nValues",
-    .state_setter_note = " and a continuous state (fmi3SetContinuousStates sets states in model "
-                         "exchange)",
-    .step_discarded_state = AK_STEP_MODE, /* FMI 3 has no StepFailed state */
-    /* Magic "AKinFMU3", distinct from FMI 2's "AKinFMUs"; no input derivatives in FMI 3. */
-    .state_format = {"AKinFMU3", 1u, "FMI 3 FMU state", "instantiationToken", "interface",
-                     "FMUState", "fmi3GetFMUState", "fmi3DeserializeFMUState",
-                     "fmi3SerializedFMUStateSize", false},
-    .image_states = {AK_INSTANTIATED, AK_CONFIGURATION_MODE, AK_INITIALIZATION_MODE, AK_EVENT_MODE,
-                     AK_STEP_MODE, AK_CONTINUOUS_TIME_MODE, AK_RECONFIGURATION_MODE,
-                     AK_TERMINATED},
-    .possible_states = {AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_TERMINATED | AK_EVENT_MODE |
-                            AK_CONTINUOUS_TIME_MODE,
-                        AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_TERMINATED | AK_STEP_MODE},
-    .elements_at = ak3_elements_at,
-    .time_vr = &AK3_TIME_VALUE_REFERENCE,
-    .refuse_real = ak3_refuse_real,
-    .name_of = ak3_name_of,
-    .count_matches = ak3_count_matches,
-    .errors_always_logged = true,
-    .send = send,
-    .allocate = allocate,
-    .release = release,
-};
 
 const char *fmi3GetVersion(void) {
     return fmi3Version;

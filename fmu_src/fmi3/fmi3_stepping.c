@@ -35,17 +35,16 @@ fmi3Status fmi3UpdateDiscreteStates(fmi3Instance c, fmi3Boolean *discreteStatesN
                                     fmi3Boolean *valuesOfContinuousStatesChanged,
                                     fmi3Boolean *nextEventTimeDefined,
                                     fmi3Float64 *nextEventTime) {
-    ak_instance *instance = c;
     const char *self = fmi3_name(AK3_UPDATE_DISCRETE_STATES);
-    if (!fmi3_allowed(instance, AK3_UPDATE_DISCRETE_STATES) ||
-        !ak_not_null(instance, self, discreteStatesNeedUpdate, "discreteStatesNeedUpdate") ||
-        !ak_not_null(instance, self, terminateSimulation, "terminateSimulation") ||
-        !ak_not_null(instance, self, nominalsOfContinuousStatesChanged,
+    if (!fmi3_allowed(c, AK3_UPDATE_DISCRETE_STATES) ||
+        !ak_not_null(c, self, discreteStatesNeedUpdate, "discreteStatesNeedUpdate") ||
+        !ak_not_null(c, self, terminateSimulation, "terminateSimulation") ||
+        !ak_not_null(c, self, nominalsOfContinuousStatesChanged,
                      "nominalsOfContinuousStatesChanged") ||
-        !ak_not_null(instance, self, valuesOfContinuousStatesChanged,
+        !ak_not_null(c, self, valuesOfContinuousStatesChanged,
                      "valuesOfContinuousStatesChanged") ||
-        !ak_not_null(instance, self, nextEventTimeDefined, "nextEventTimeDefined") ||
-        !ak_not_null(instance, self, nextEventTime, "nextEventTime")) {
+        !ak_not_null(c, self, nextEventTimeDefined, "nextEventTimeDefined") ||
+        !ak_not_null(c, self, nextEventTime, "nextEventTime")) {
         return fmi3Error;
     }
     /* No discrete states, no time events, nothing that could ask for another iteration. */
@@ -62,11 +61,10 @@ fmi3Status fmi3CompletedIntegratorStep(fmi3Instance c, fmi3Boolean noSetFMUState
                                        fmi3Boolean *enterEventMode,
                                        fmi3Boolean *terminateSimulation) {
     (void)noSetFMUStatePriorToCurrentPoint;
-    ak_instance *instance = c;
     const char *self = fmi3_name(AK3_COMPLETED_INTEGRATOR_STEP);
-    if (!fmi3_allowed(instance, AK3_COMPLETED_INTEGRATOR_STEP) ||
-        !ak_not_null(instance, self, enterEventMode, "enterEventMode") ||
-        !ak_not_null(instance, self, terminateSimulation, "terminateSimulation")) {
+    if (!fmi3_allowed(c, AK3_COMPLETED_INTEGRATOR_STEP) ||
+        !ak_not_null(c, self, enterEventMode, "enterEventMode") ||
+        !ak_not_null(c, self, terminateSimulation, "terminateSimulation")) {
         return fmi3Error;
     }
     *enterEventMode = fmi3False;
