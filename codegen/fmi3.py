@@ -65,12 +65,9 @@ def arrays_c(model):
     owner = array_of_scalar(model)
     for vr in sorted(owner):
         entry = owner[vr]
-        shape = tuple(entry.get("shape", ()))
-        rows, cols = (shape + (1, 1))[:2] if len(shape) < 2 else shape
         lines.append(f"    [{vr}] = {{{c_string(entry['name'])}, {entry['vr']}, "
-                     f"{n_elements(entry)}, {len(shape)}, {rows}, {cols}}},")
-    lines += ["};", "", f"const int AK3_N_ARRAYS = {len(model.arrays)};",
-              f"const unsigned int AK3_TIME_VALUE_REFERENCE = {TIME_VR};", ""]
+                     f"{n_elements(entry)}, {len(entry.get('shape', ()))}}},")
+    lines += ["};", "", f"const unsigned int AK3_TIME_VALUE_REFERENCE = {TIME_VR};", ""]
     return "\n".join(lines)
 
 

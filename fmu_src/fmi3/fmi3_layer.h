@@ -3,10 +3,7 @@
 #ifndef ANGULAR_KINEMATICS_FMI3_LAYER_H
 #define ANGULAR_KINEMATICS_FMI3_LAYER_H
 
-#include <stdbool.h>
-
 #include "fmi3Functions.h"
-#include "model.h"
 #include "runtime.h"
 
 /* An FMI 3 array (theta, R, ...) is one variable whose value reference is that of its first
@@ -16,13 +13,11 @@ typedef struct {
     unsigned int first_vr;  /* the FMI 3 value reference of the array */
     unsigned int n_elements;
     unsigned int n_dimensions; /* 0 scalar, 1 vector, 2 matrix */
-    unsigned int rows, cols;
 } ak3_array;
 
 /* Generated per model (models/<Model>/fmi3/<Model>_fmi3_arrays.c): for every value reference of
  * the value array, the array holding it. */
 extern const ak3_array AK3_ARRAYS[AK_MAX_VARIABLES];
-extern const int AK3_N_ARRAYS;
 /* Time is not in the value array: it is answered from the instance's time. */
 extern const unsigned int AK3_TIME_VALUE_REFERENCE;
 

@@ -24,16 +24,14 @@ static void send_unborn(const void *context, const char *message) {
 /* The checks and the allocation common to both interfaces; NULL after logging why. */
 static fmi3_instance *instantiate(const char *function, fmi3String instanceName,
                                   fmi3String instantiationToken, fmi3Boolean loggingOn,
-                                  fmi3InstanceEnvironment environment,
-                                  fmi3LogMessageCallback logMessage, ak_interface interface) {
-    const unborn who = {environment, logMessage};
+                                  const unborn *who, ak_interface interface) {
     if (instanceName == NULL || instanceName[0] == '\0') {
-        ak_log_without_instance(send_unborn, &who, "%s: instanceName must be a non-empty string",
+        ak_log_without_instance(send_unborn, who, "%s: instanceName must be a non-empty string",
                                 function);
         return NULL;
     }
     if (instantiationToken == NULL || strcmp(instantiationToken, AK_MODEL.guid) != 0) {
-        ak_log_without_instance(send_unborn, &who,
+        ak_log_without_instance(send_unborn, who,
                                 "%s: instantiationToken = \"%s\" does not match the token \"%s\" "
                                 "of this FMU's binary (%s)",
                                 function, instantiationToken ? instantiationToken : "(null)",
@@ -42,13 +40,13 @@ static fmi3_instance *instantiate(const char *function, fmi3String instanceName,
     }
     fmi3_instance *instance = calloc(1, sizeof(fmi3_instance));
     if (instance != NULL) {
-        instance->environment = environment;
-        instance->log_message = logMessage;
+        instance->environment = who->environment;
+        instance->log_message = who->log_message;
     }
     if (instance == NULL ||
         !ak_instance_start(&instance->base, &FMI3_LAYER, function, instanceName, interface,
-                           logMessage != NULL, loggingOn != fmi3False)) {
-        ak_log_without_instance(send_unborn, &who, "%s: out of memory allocating the instance",
+                           who->log_message != NULL, loggingOn != fmi3False)) {
+        ak_log_without_instance(send_unborn, who, "%s: out of memory allocating the instance",
                                 function);
         free(instance);
         return NULL;
@@ -62,8 +60,9 @@ fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String in
                                           fmi3InstanceEnvironment instanceEnvironment,
                                           fmi3LogMessageCallback logMessage) {
     (void)resourcePath, (void)visible; /* no resources, no user interface */
+    const unborn who = {instanceEnvironment, logMessage};
     return instantiate("fmi3InstantiateModelExchange", instanceName, instantiationToken,
-                       loggingOn, instanceEnvironment, logMessage, AK_MODEL_EXCHANGE);
+                       loggingOn, &who, AK_MODEL_EXCHANGE);
 }
 
 fmi3Instance fmi3InstantiateCoSimulation(
@@ -91,8 +90,7 @@ fmi3Instance fmi3InstantiateCoSimulation(
                                 self, nRequiredIntermediateVariables);
         return NULL;
     }
-    return instantiate(self, instanceName, instantiationToken, loggingOn, instanceEnvironment,
-                       logMessage, AK_CO_SIMULATION);
+    return instantiate(self, instanceName, instantiationToken, loggingOn, &who, AK_CO_SIMULATION);
 }
 
 fmi3Instance fmi3InstantiateScheduledExecution(
