@@ -29,9 +29,8 @@ static const ak3_array *array_of_causality(const ak_instance *instance, const ch
 /* The highest order fmi3GetOutputDerivatives gives: maxOutputDerivativeOrder. */
 enum { MAX_OUTPUT_DERIVATIVE_ORDER = 1 };
 
-/* Checks a list of value references of one causality and expands it into its elements (at most
- * AK_MAX_VARIABLES), *n_elements of them. also: the first elements of arrays accepted besides
- * (the states or their derivatives), or NULL. */
+/* Checks a list of value references of one causality and expands it into its *n_elements
+ * elements. also: arrays accepted besides (the states or their derivatives), or NULL. */
 static bool arrays_valid(const ak_instance *instance, const char *function, const char *list_name,
                          const unsigned int vr[], size_t n, ak_causality causality,
                          const unsigned int *also, unsigned int elements[], size_t *n_elements) {

@@ -95,11 +95,16 @@ typedef enum {
 extern const ak_function_rule FMI3_RULES[AK3_N_FUNCTIONS];
 extern const ak_layer FMI3_LAYER;
 
+/* The importer's logger (log_message NULL: none). */
+typedef struct {
+    fmi3InstanceEnvironment environment;
+    fmi3LogMessageCallback log_message;
+} fmi3_logger;
+
 /* FMI 3 gives no memory callbacks: the instance is on the C heap. */
 typedef struct {
     ak_instance base; /* first: an fmi3Instance is also an ak_instance */
-    fmi3InstanceEnvironment environment;
-    fmi3LogMessageCallback log_message;
+    fmi3_logger logger;
 } fmi3_instance;
 
 static inline bool fmi3_allowed(const ak_instance *instance, ak3_function function) {

@@ -9,22 +9,18 @@ const char *fmi3GetVersion(void) {
 }
 
 /* Before an instance exists: the importer's logger, if it gave one. */
-typedef struct {
-    fmi3InstanceEnvironment environment;
-    fmi3LogMessageCallback log_message;
-} unborn;
-
 static void send_unborn(const void *context, const char *message) {
-    const unborn *u = context;
-    if (u->log_message != NULL) {
-        u->log_message(u->environment, fmi3Error, AK_LOG_CATEGORY_NAMES[AK_LOG_ERROR], message);
+    const fmi3_logger *logger = context;
+    if (logger->log_message != NULL) {
+        logger->log_message(logger->environment, fmi3Error, AK_LOG_CATEGORY_NAMES[AK_LOG_ERROR],
+                            message);
     }
 }
 
 /* The checks and the allocation common to both interfaces; NULL after logging why. */
 static fmi3_instance *instantiate(const char *function, fmi3String instanceName,
                                   fmi3String instantiationToken, fmi3Boolean loggingOn,
-                                  const unborn *who, ak_interface interface) {
+                                  const fmi3_logger *who, ak_interface interface) {
     if (instanceName == NULL || instanceName[0] == '\0') {
         ak_log_without_instance(send_unborn, who, "%s: instanceName must be a non-empty string",
                                 function);
@@ -40,8 +36,7 @@ static fmi3_instance *instantiate(const char *function, fmi3String instanceName,
     }
     fmi3_instance *instance = calloc(1, sizeof(fmi3_instance));
     if (instance != NULL) {
-        instance->environment = who->environment;
-        instance->log_message = who->log_message;
+        instance->logger = *who;
     }
     if (instance == NULL ||
         !ak_instance_start(&instance->base, &FMI3_LAYER, function, instanceName, interface,
@@ -60,7 +55,7 @@ fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String in
                                           fmi3InstanceEnvironment instanceEnvironment,
                                           fmi3LogMessageCallback logMessage) {
     (void)resourcePath, (void)visible; /* no resources, no user interface */
-    const unborn who = {instanceEnvironment, logMessage};
+    const fmi3_logger who = {instanceEnvironment, logMessage};
     return instantiate("fmi3InstantiateModelExchange", instanceName, instantiationToken,
                        loggingOn, &who, AK_MODEL_EXCHANGE);
 }
@@ -75,7 +70,7 @@ fmi3Instance fmi3InstantiateCoSimulation(
     (void)resourcePath, (void)visible, (void)earlyReturnAllowed;
     (void)requiredIntermediateVariables, (void)intermediateUpdate;
     const char *self = "fmi3InstantiateCoSimulation";
-    const unborn who = {instanceEnvironment, logMessage};
+    const fmi3_logger who = {instanceEnvironment, logMessage};
     if (eventModeUsed) {
         ak_log_without_instance(send_unborn, &who,
                                 "%s: eventModeUsed = true, but this FMU has no events "
@@ -100,7 +95,7 @@ fmi3Instance fmi3InstantiateScheduledExecution(
     fmi3LockPreemptionCallback lockPreemption, fmi3UnlockPreemptionCallback unlockPreemption) {
     (void)instanceName, (void)instantiationToken, (void)resourcePath, (void)visible;
     (void)loggingOn, (void)clockUpdate, (void)lockPreemption, (void)unlockPreemption;
-    const unborn who = {instanceEnvironment, logMessage};
+    const fmi3_logger who = {instanceEnvironment, logMessage};
     send_unborn(&who, "fmi3InstantiateScheduledExecution: not supported: this FMU has no "
                       "ScheduledExecution interface (use fmi3InstantiateCoSimulation or "
                       "fmi3InstantiateModelExchange)");

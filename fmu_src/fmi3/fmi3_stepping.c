@@ -41,8 +41,7 @@ fmi3Status fmi3UpdateDiscreteStates(fmi3Instance c, fmi3Boolean *discreteStatesN
         !ak_not_null(c, self, terminateSimulation, "terminateSimulation") ||
         !ak_not_null(c, self, nominalsOfContinuousStatesChanged,
                      "nominalsOfContinuousStatesChanged") ||
-        !ak_not_null(c, self, valuesOfContinuousStatesChanged,
-                     "valuesOfContinuousStatesChanged") ||
+        !ak_not_null(c, self, valuesOfContinuousStatesChanged, "valuesOfContinuousStatesChanged") ||
         !ak_not_null(c, self, nextEventTimeDefined, "nextEventTimeDefined") ||
         !ak_not_null(c, self, nextEventTime, "nextEventTime")) {
         return fmi3Error;

@@ -74,9 +74,9 @@ static void refuse_real(const ak_instance *instance, const char *function, size_
 /* Unlike FMI 2's, FMI 3's logMessage takes the message, not a printf format. */
 static void send(const ak_instance *instance, ak_log_category category, ak_status status,
                  const char *message) {
-    const fmi3_instance *self = (const fmi3_instance *)instance;
-    self->log_message(self->environment, fmi3_status(status), AK_LOG_CATEGORY_NAMES[category],
-                      message);
+    const fmi3_logger *logger = &((const fmi3_instance *)instance)->logger;
+    logger->log_message(logger->environment, fmi3_status(status), AK_LOG_CATEGORY_NAMES[category],
+                        message);
 }
 
 static void *allocate(const ak_instance *instance, size_t size) {
@@ -164,20 +164,18 @@ fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
 
 fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         const fmi3Int64 values[], size_t nValues) {
-    ak_instance *instance = c;
     const char *self = fmi3_name(AK3_SET_INT64);
-    if (!int64_call_valid(instance, AK3_SET_INT64, vr, nvr, values, nValues)) {
+    if (!int64_call_valid(c, AK3_SET_INT64, vr, nvr, values, nValues)) {
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
         /* An Int64 far out of range becomes a large double, which the parameter range refuses. */
-        if (!ak_parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i]],
-                                   (double)values[i])) {
+        if (!ak_parameter_settable(c, self, i, &AK_MODEL.variables[vr[i]], (double)values[i])) {
             return fmi3Error;
         }
     }
     for (size_t i = 0; i < nvr; i++) {
-        ak_store(instance, self, vr[i], (double)values[i]);
+        ak_store(c, self, vr[i], (double)values[i]);
     }
     return fmi3OK;
 }
