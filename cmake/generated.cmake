@@ -68,19 +68,14 @@ set(AK_FMI2_HEADERS
   fmu_src/models/model.h
   fmu_src/models/log_categories.h)
 set(AK_FMI3_SOURCES
-  fmu_src/fmi3/fmi3_layer.c
   fmu_src/fmi3/fmi3_state_machine.c
   fmu_src/fmi3/fmi3_lifecycle.c
   fmu_src/fmi3/fmi3_values.c
-  fmu_src/fmi3/fmi3_cosimulation.c
-  fmu_src/fmi3/fmi3_model_exchange.c
+  fmu_src/fmi3/fmi3_stepping.c
   fmu_src/fmi3/fmi3_derivatives.c
-  fmu_src/fmi3/fmi3_dependencies.c
-  fmu_src/fmi3/fmi3_fmu_state.c
   fmu_src/fmi3/fmi3_unsupported.c)
 set(AK_FMI3_HEADERS
   fmu_src/fmi3/fmi3_layer.h
-  fmu_src/fmi3/fmi3_arrays.h
   fmu_src/runtime/runtime.h
   fmu_src/runtime/instance.h
   fmu_src/runtime/outputs.h

@@ -1,16 +1,10 @@
-/* FMI 3.0 getters and setters. A value reference names a whole array (theta: 3 values, R: 9,
- * row-major) and nValues must be exactly the number of elements of all the value references
- * given. Every call checks all of its arguments before it touches a value, so a rejected call
- * changes nothing. Float64 holds the Real variables (and the independent variable time, which
- * can be read only); Int64 the Enumerations (FMI 3, section 2.4.7.1); no variable has another
- * type (fmi3_unsupported.c). Float64 values are the runtime's (ak_get_values, ak_set_values), in
- * this layer's words (FMI3_LAYER). */
-#include "fmi3_layer.h"
+/* FMI 3.0 getters and setters, and what the layer tells the runtime of itself (FMI3_LAYER). A
+ * value reference names a whole array and nValues counts all their elements. Float64 holds the
+ * Real variables and time (read only), Int64 the Enumerations (FMI 3, section 2.4.7.1); no
+ * variable has another type (fmi3_unsupported.c). */
+#include <stdlib.h>
 
-static const char *type_name(ak_type type) {
-    return type == AK_TYPE_INTEGER ? "Enumeration (fmi3GetInt64/fmi3SetInt64)"
-                                   : "Float64 (fmi3GetFloat64/fmi3SetFloat64)";
-}
+#include "fmi3_layer.h"
 
 /* The array of a value reference whose variable has the function's type; NULL after logging. */
 static const ak3_array *array_of_type(const ak_instance *instance, const char *function,
@@ -18,37 +12,17 @@ static const ak3_array *array_of_type(const ak_instance *instance, const char *f
     const ak3_array *array = ak3_array_of(vr);
     if (array == NULL) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                "%s: valueReferences[%zu] = %u is not a value reference of this FMU's FMI 3 "
-                "variables (docs/fmi3_variables.md)",
-                function, index, vr);
+               "%s: valueReferences[%zu] = %u is not a value reference of this FMU's FMI 3 "
+               "variables (docs/fmi3_variables.md)",
+               function, index, vr);
         return NULL;
     }
-    const ak_variable *variable = &AK_MODEL.variables[vr]; /* known: an array */
-    if (variable->type != type) {
+    if (AK_MODEL.variables[vr].type != type) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                "%s: valueReferences[%zu] = %u is %s, of type %s", function,
-                index, vr, array->name, type_name(variable->type));
-        return NULL;
-    }
-    return array;
-}
-
-const ak3_array *ak3_array_of_causality(const ak_instance *instance, const char *function,
-                                        const char *list_name, size_t index, unsigned int vr,
-                                        ak_causality causality) {
-    const ak3_array *array = ak3_array_of(vr);
-    if (array == NULL) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                "%s: %s[%zu] = %u is not a value reference of this FMU's FMI 3 variables",
-                function, list_name, index, vr);
-        return NULL;
-    }
-    const ak_causality found = AK_MODEL.variables[vr].causality;
-    if (found != causality) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
-                function, list_name, index, vr, array->name,
-                found == AK_CAUSALITY_PARAMETER ? "a" : "an", ak_causality_name(found),
-                ak_causality_name(causality));
+               "%s: valueReferences[%zu] = %u is %s, of type %s", function, index, vr, array->name,
+               AK_MODEL.variables[vr].type == AK_TYPE_INTEGER
+                   ? "Enumeration (fmi3GetInt64/fmi3SetInt64)"
+                   : "Float64 (fmi3GetFloat64/fmi3SetFloat64)");
         return NULL;
     }
     return array;
@@ -68,35 +42,25 @@ bool ak3_count_matches(const ak_instance *instance, const char *function, const 
         return true;
     }
     ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-            "%s: %s = %zu, but the %zu value references (%s%s%s) have %zu elements (too %s); "
-            "nothing read or written",
-            function, count_name, n, n_vr, n_vr > 0 ? name_of_vr(vr[0]) : "",
-            n_vr > 1 ? " .. " : "", n_vr > 1 ? name_of_vr(vr[n_vr - 1]) : "", total,
-            n < total ? "few" : "many");
+           "%s: %s = %zu, but the %zu value references (%s%s%s) have %zu elements (too %s); "
+           "nothing read or written",
+           function, count_name, n, n_vr, n_vr > 0 ? name_of_vr(vr[0]) : "",
+           n_vr > 1 ? " .. " : "", n_vr > 1 ? name_of_vr(vr[n_vr - 1]) : "", total,
+           n < total ? "few" : "many");
     return false;
 }
 
-size_t ak3_expand(const unsigned int vr[], size_t n, unsigned int elements[], size_t capacity) {
-    size_t k = 0;
-    for (size_t i = 0; i < n; i++) {
-        for (unsigned int e = 0; e < AK3_ARRAYS[vr[i]].n_elements && k < capacity; e++) {
-            elements[k++] = vr[i] + e;
-        }
-    }
-    return k;
-}
-
-unsigned int ak3_elements_at(unsigned int vr) {
+static unsigned int elements_at(unsigned int vr) {
     const ak3_array *array = ak3_array_of(vr);
     return array != NULL ? array->n_elements : 0u;
 }
 
-const char *ak3_name_of(unsigned int vr) {
+static const char *name_of(unsigned int vr) {
     return AK3_ARRAYS[vr].name;
 }
 
-void ak3_refuse_real(const ak_instance *instance, const char *function, size_t index,
-                     unsigned int vr, bool set) {
+static void refuse_real(const ak_instance *instance, const char *function, size_t index,
+                        unsigned int vr, bool set) {
     if (set && vr == AK3_TIME_VALUE_REFERENCE) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: valueReferences[%zu] = %u is time, the independent variable, which cannot be "
@@ -106,6 +70,59 @@ void ak3_refuse_real(const ak_instance *instance, const char *function, size_t i
     }
     (void)array_of_type(instance, function, index, vr, AK_TYPE_REAL);
 }
+
+/* Unlike FMI 2's, FMI 3's logMessage takes the message, not a printf format. */
+static void send(const ak_instance *instance, ak_log_category category, ak_status status,
+                 const char *message) {
+    const fmi3_logger *logger = &((const fmi3_instance *)instance)->logger;
+    logger->log_message(logger->environment, fmi3_status(status), AK_LOG_CATEGORY_NAMES[category],
+                        message);
+}
+
+static void *allocate(const ak_instance *instance, size_t size) {
+    (void)instance;
+    return calloc(1, size);
+}
+
+static void release(const ak_instance *instance, void *memory) {
+    (void)instance;
+    free(memory);
+}
+
+const ak_layer FMI3_LAYER = {
+    .state_names = {"Instantiated", "Configuration Mode", "Initialization Mode", "Event Mode",
+                    "Step Mode", "Continuous-Time Mode", "Reconfiguration Mode", "Terminated",
+                    "Step In Progress", "Step Failed", "Step Canceled"},
+    .other_interface = {"not available to this instance, made by fmi3InstantiateModelExchange",
+                        "not available to this instance, made by fmi3InstantiateCoSimulation "
+                        "without Event Mode"},
+    .vr_name = "valueReferences",
+    .vr_count_name = "nValueReferences",
+    .values_name = "values",
+    .values_count_name = "nValues",
+    .state_setter_note = " and a continuous state (fmi3SetContinuousStates sets states in model "
+                         "exchange)",
+    .step_discarded_state = AK_STEP_MODE, /* FMI 3 has no StepFailed state */
+    /* Magic "AKinFMU3", distinct from FMI 2's "AKinFMUs"; no input derivatives in FMI 3. */
+    .state_format = {"AKinFMU3", 1u, "FMI 3 FMU state", "instantiationToken", "interface",
+                     "FMUState", "fmi3GetFMUState", "fmi3DeserializeFMUState",
+                     "fmi3SerializedFMUStateSize", false},
+    .image_states = {AK_INSTANTIATED, AK_CONFIGURATION_MODE, AK_INITIALIZATION_MODE, AK_EVENT_MODE,
+                     AK_STEP_MODE, AK_CONTINUOUS_TIME_MODE, AK_RECONFIGURATION_MODE,
+                     AK_TERMINATED},
+    .possible_states = {AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_TERMINATED | AK_EVENT_MODE |
+                            AK_CONTINUOUS_TIME_MODE,
+                        AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_TERMINATED | AK_STEP_MODE},
+    .elements_at = elements_at,
+    .time_vr = &AK3_TIME_VALUE_REFERENCE,
+    .refuse_real = refuse_real,
+    .name_of = name_of,
+    .count_matches = ak3_count_matches,
+    .errors_always_logged = true,
+    .send = send,
+    .allocate = allocate,
+    .release = release,
+};
 
 fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t nValues) {
@@ -147,19 +164,18 @@ fmi3Status fmi3GetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nv
 
 fmi3Status fmi3SetInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         const fmi3Int64 values[], size_t nValues) {
-    ak_instance *instance = c;
     const char *self = fmi3_name(AK3_SET_INT64);
-    if (!int64_call_valid(instance, AK3_SET_INT64, vr, nvr, values, nValues)) {
+    if (!int64_call_valid(c, AK3_SET_INT64, vr, nvr, values, nValues)) {
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
         /* An Int64 far out of range becomes a large double, which the parameter range refuses. */
-        if (!ak_parameter_settable(instance, self, i, &AK_MODEL.variables[vr[i]], (double)values[i])) {
+        if (!ak_parameter_settable(c, self, i, &AK_MODEL.variables[vr[i]], (double)values[i])) {
             return fmi3Error;
         }
     }
     for (size_t i = 0; i < nvr; i++) {
-        ak_store(instance, self, vr[i], (double)values[i]);
+        ak_store(c, self, vr[i], (double)values[i]);
     }
     return fmi3OK;
 }

@@ -1,6 +1,33 @@
-/* FMI 3.0 model exchange over the runtime's continuous-state functions (runtime/continuous.c).
- * The models have no event indicators, so no event ever happens. */
+/* FMI 3.0 time: co-simulation's step (runtime/stepping.c) and model exchange's continuous states
+ * (runtime/continuous.c). FMI 3 gives no input derivatives: a step holds the inputs. The models
+ * have no event indicators, so no event ever happens. */
 #include "fmi3_layer.h"
+
+fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 currentCommunicationPoint,
+                      fmi3Float64 communicationStepSize,
+                      fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+                      fmi3Boolean *eventHandlingNeeded, fmi3Boolean *terminateSimulation,
+                      fmi3Boolean *earlyReturn, fmi3Float64 *lastSuccessfulTime) {
+    (void)noSetFMUStatePriorToCurrentPoint; /* an FMU state is a copy: nothing to release */
+    ak_instance *instance = c;
+    const char *self = fmi3_name(AK3_DO_STEP);
+    if (!fmi3_allowed(instance, AK3_DO_STEP) ||
+        !ak_not_null(instance, self, eventHandlingNeeded, "eventHandlingNeeded") ||
+        !ak_not_null(instance, self, terminateSimulation, "terminateSimulation") ||
+        !ak_not_null(instance, self, earlyReturn, "earlyReturn") ||
+        !ak_not_null(instance, self, lastSuccessfulTime, "lastSuccessfulTime")) {
+        return fmi3Error;
+    }
+    const ak_status status =
+        ak_do_step(instance, self, currentCommunicationPoint, communicationStepSize);
+    if (status != AK_STATUS_ERROR) {
+        *eventHandlingNeeded = fmi3False;
+        *terminateSimulation = fmi3False;
+        *earlyReturn = fmi3False;
+        *lastSuccessfulTime = instance->time;
+    }
+    return fmi3_status(status);
+}
 
 fmi3Status fmi3UpdateDiscreteStates(fmi3Instance c, fmi3Boolean *discreteStatesNeedUpdate,
                                     fmi3Boolean *terminateSimulation,
@@ -8,17 +35,15 @@ fmi3Status fmi3UpdateDiscreteStates(fmi3Instance c, fmi3Boolean *discreteStatesN
                                     fmi3Boolean *valuesOfContinuousStatesChanged,
                                     fmi3Boolean *nextEventTimeDefined,
                                     fmi3Float64 *nextEventTime) {
-    ak_instance *instance = c;
     const char *self = fmi3_name(AK3_UPDATE_DISCRETE_STATES);
-    if (!fmi3_allowed(instance, AK3_UPDATE_DISCRETE_STATES) ||
-        !ak_not_null(instance, self, discreteStatesNeedUpdate, "discreteStatesNeedUpdate") ||
-        !ak_not_null(instance, self, terminateSimulation, "terminateSimulation") ||
-        !ak_not_null(instance, self, nominalsOfContinuousStatesChanged,
+    if (!fmi3_allowed(c, AK3_UPDATE_DISCRETE_STATES) ||
+        !ak_not_null(c, self, discreteStatesNeedUpdate, "discreteStatesNeedUpdate") ||
+        !ak_not_null(c, self, terminateSimulation, "terminateSimulation") ||
+        !ak_not_null(c, self, nominalsOfContinuousStatesChanged,
                      "nominalsOfContinuousStatesChanged") ||
-        !ak_not_null(instance, self, valuesOfContinuousStatesChanged,
-                     "valuesOfContinuousStatesChanged") ||
-        !ak_not_null(instance, self, nextEventTimeDefined, "nextEventTimeDefined") ||
-        !ak_not_null(instance, self, nextEventTime, "nextEventTime")) {
+        !ak_not_null(c, self, valuesOfContinuousStatesChanged, "valuesOfContinuousStatesChanged") ||
+        !ak_not_null(c, self, nextEventTimeDefined, "nextEventTimeDefined") ||
+        !ak_not_null(c, self, nextEventTime, "nextEventTime")) {
         return fmi3Error;
     }
     /* No discrete states, no time events, nothing that could ask for another iteration. */
@@ -35,11 +60,10 @@ fmi3Status fmi3CompletedIntegratorStep(fmi3Instance c, fmi3Boolean noSetFMUState
                                        fmi3Boolean *enterEventMode,
                                        fmi3Boolean *terminateSimulation) {
     (void)noSetFMUStatePriorToCurrentPoint;
-    ak_instance *instance = c;
     const char *self = fmi3_name(AK3_COMPLETED_INTEGRATOR_STEP);
-    if (!fmi3_allowed(instance, AK3_COMPLETED_INTEGRATOR_STEP) ||
-        !ak_not_null(instance, self, enterEventMode, "enterEventMode") ||
-        !ak_not_null(instance, self, terminateSimulation, "terminateSimulation")) {
+    if (!fmi3_allowed(c, AK3_COMPLETED_INTEGRATOR_STEP) ||
+        !ak_not_null(c, self, enterEventMode, "enterEventMode") ||
+        !ak_not_null(c, self, terminateSimulation, "terminateSimulation")) {
         return fmi3Error;
     }
     *enterEventMode = fmi3False;
