@@ -1,13 +1,10 @@
-/* FMU states for both FMI versions: get, set, free, serialize, deserialize, and their byte image.
- * A state holds its serialized form, so there is one layout and one validator; each layer names
- * its format (ak_state_format). The layout (little-endian, no pointers: header, the values by
- * value reference, FMI 2's input derivatives, CRC-32) is codegen/state_layout.py's, which
- * documents it in docs/capabilities.md#fmu-state; tests/python/test_documentation.py reads the
- * offsets back from real states.
+/* FMU states for both FMI versions: get, set, free, serialize, deserialize, and their byte image,
+ * in the format each layer names (ak_state_format). A state holds its serialized form: one layout
+ * and one validator. The layout is codegen/state_layout.py's (docs/capabilities.md#fmu-state;
+ * tests/python/test_documentation.py reads the offsets back from real states).
  *
- * The instance name, the callbacks and the debug-logging settings belong to the instance, not to
- * the simulation: setting a state leaves them. A byte string is checked from its length to its
- * last value before anything is decoded; a refusal says which check failed and changes nothing. */
+ * The instance name, the callbacks and the logging settings belong to the instance, not to the
+ * simulation: setting a state leaves them. */
 #include <math.h>
 #include <string.h>
 
@@ -39,16 +36,6 @@ struct ak_fmu_state_s {
     unsigned char bytes[MAX_SIZE];
 };
 typedef struct ak_fmu_state_s ak_fmu_state;
-
-/* The decoded content of a checked image. */
-typedef struct {
-    ak_state state;
-    double time;
-    double stop_time;
-    bool stop_time_defined;
-    double values[AK_MAX_VARIABLES];
-    double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
-} ak_state_content;
 
 /* Where input k's derivative of order n + 1 is. */
 static size_t offset_derivative(int k, int n) {
@@ -99,13 +86,12 @@ static void encode(const ak_instance *instance, unsigned char bytes[MAX_SIZE]) {
     ak_put_u32(bytes + offset_checksum(instance), ak_crc32(bytes, offset_checksum(instance)));
 }
 
-/* The interface of an image as an adjective ("a model-exchange instance") and as a noun. */
-static const char *interface_adjective(uint32_t interface) {
-    return interface == 0 ? "model-exchange" : interface == 1 ? "co-simulation" : "unknown";
-}
-
-static const char *interface_noun(uint32_t interface) {
-    return interface == 0 ? "model exchange" : "co-simulation";
+/* The interface of an image as an adjective ("a model-exchange instance") or as a noun. */
+static const char *interface_words(uint32_t interface, bool adjective) {
+    if (interface == 0) {
+        return adjective ? "model-exchange" : "model exchange";
+    }
+    return interface == 1 ? "co-simulation" : "unknown";
 }
 
 /* The state of an image's state field that an instance of its interface can be in, or 0. */
@@ -153,22 +139,19 @@ static bool image_intact(const ak_instance *instance, const char *function,
                function, stored, computed);
         return false;
     }
-    char token[TOKEN_FIELD + 1];
-    memcpy(token, bytes + OFFSET_TOKEN, TOKEN_FIELD);
-    token[TOKEN_FIELD] = '\0';
-    if (strcmp(token, AK_MODEL.guid) != 0) {
+    const char *token = (const char *)bytes + OFFSET_TOKEN; /* NUL-padded, or all 40 bytes */
+    if (strncmp(token, AK_MODEL.guid, TOKEN_FIELD) != 0) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: the FMU state is of an FMU with %s \"%s\", not this one's (%s) \"%s\"",
+               "%s: the FMU state is of an FMU with %s \"%.40s\", not this one's (%s) \"%s\"",
                function, format->token_name, token, AK_MODEL.model_identifier, AK_MODEL.guid);
         return false;
     }
     return true;
 }
 
-/* Checks a byte string from its length to its last value and decodes it into *content; on
- * failure logs why. Nothing of the instance is touched. */
-static bool decode(const ak_instance *instance, const char *function, const unsigned char *bytes,
-                   size_t size, ak_state_content *content) {
+/* Checks a byte string from its length to its last value; logs why not. */
+static bool valid(const ak_instance *instance, const char *function, const unsigned char *bytes,
+                  size_t size) {
     if (!image_intact(instance, function, bytes, size)) {
         return false;
     }
@@ -177,28 +160,25 @@ static bool decode(const ak_instance *instance, const char *function, const unsi
     if (interface != image_interface(instance->interface)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: the FMU state is of a %s instance (%s %u); this instance is for %s",
-               function, interface_adjective(interface), format->interface_name, interface,
-               interface_noun(image_interface(instance->interface)));
+               function, interface_words(interface, true), format->interface_name, interface,
+               interface_words(image_interface(instance->interface), false));
         return false;
     }
     const uint32_t state = ak_get_u32(bytes + OFFSET_STATE);
     const uint32_t stop_time_defined = ak_get_u32(bytes + OFFSET_STOP_TIME_DEFINED);
-    content->state = decoded_state(instance->layer, state, interface);
-    content->time = ak_get_f64(bytes + OFFSET_TIME);
-    content->stop_time = ak_get_f64(bytes + OFFSET_STOP_TIME);
-    content->stop_time_defined = stop_time_defined == 1;
-    if (content->state == 0 || stop_time_defined > 1 || ak_get_u32(bytes + OFFSET_RESERVED) != 0 ||
-        !isfinite(content->time) || !isfinite(content->stop_time)) {
+    const double time = ak_get_f64(bytes + OFFSET_TIME);
+    const double stop_time = ak_get_f64(bytes + OFFSET_STOP_TIME);
+    if (decoded_state(instance->layer, state, interface) == 0 || stop_time_defined > 1 ||
+        ak_get_u32(bytes + OFFSET_RESERVED) != 0 || !isfinite(time) || !isfinite(stop_time)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: the FMU state holds an impossible header (state 0x%x, time %g, stop time %g, "
                "stop time defined %u)",
-               function, state, content->time, content->stop_time, stop_time_defined);
+               function, state, time, stop_time, stop_time_defined);
         return false;
     }
     for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
         const ak_variable *variable = ak_variable_of((unsigned int)vr);
         const double value = ak_get_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr);
-        content->values[vr] = value;
         if (variable == NULL) {
             continue; /* a hole of the table: never read */
         }
@@ -227,7 +207,6 @@ static bool decode(const ak_instance *instance, const char *function, const unsi
                        function, n + 1, AK_MODEL.variables[k].name, d);
                 return false;
             }
-            content->input_derivatives[k][n] = d;
         }
     }
     return true;
@@ -267,14 +246,11 @@ static ak_fmu_state *state_to_fill(ak_instance *instance, const char *function, 
 }
 
 ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state) {
-    if (!ak_call_allowed(instance, call)) {
+    if (!ak_call_allowed(instance, call) ||
+        !ak_not_null(instance, call->name, state, instance->layer->state_format.kind_argument)) {
         return AK_STATUS_ERROR;
     }
-    const char *function = call->name;
-    if (!ak_not_null(instance, function, state, instance->layer->state_format.kind_argument)) {
-        return AK_STATUS_ERROR;
-    }
-    ak_fmu_state *s = state_to_fill(instance, function, state);
+    ak_fmu_state *s = state_to_fill(instance, call->name, state);
     if (s == NULL) {
         return AK_STATUS_ERROR;
     }
@@ -287,21 +263,26 @@ ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, 
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *function = call->name;
-    const ak_fmu_state *s = known_state(instance, function, state);
-    ak_state_content content;
-    if (s == NULL || !decode(instance, function, s->bytes, state_size(instance), &content)) {
+    const ak_fmu_state *s = known_state(instance, call->name, state);
+    if (s == NULL || !valid(instance, call->name, s->bytes, state_size(instance))) {
         return AK_STATUS_ERROR;
     }
-    instance->state = content.state;
-    instance->time = content.time;
-    instance->stop_time_defined = content.stop_time_defined;
-    instance->stop_time = content.stop_time;
-    memcpy(instance->data.values, content.values,
-           sizeof(double) * (size_t)AK_MODEL.n_value_references);
+    const unsigned char *bytes = s->bytes;
+    instance->state = decoded_state(instance->layer, ak_get_u32(bytes + OFFSET_STATE),
+                                    image_interface(instance->interface));
+    instance->time = ak_get_f64(bytes + OFFSET_TIME);
+    instance->stop_time_defined = ak_get_u32(bytes + OFFSET_STOP_TIME_DEFINED) == 1;
+    instance->stop_time = ak_get_f64(bytes + OFFSET_STOP_TIME);
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        instance->data.values[vr] = ak_get_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr);
+    }
     if (instance->layer->state_format.input_derivatives) {
-        memcpy(instance->data.input_derivatives, content.input_derivatives,
-               sizeof content.input_derivatives[0] * (size_t)AK_MODEL.n_inputs);
+        for (int k = 0; k < AK_MODEL.n_inputs; k++) {
+            for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+                const double d = ak_get_f64(bytes + offset_derivative(k, n));
+                instance->data.input_derivatives[k][n] = d;
+            }
+        }
         ak_input_derivatives_changed(instance);
     }
     /* The outputs are recomputed from the restored inputs and parameters, not trusted from the
@@ -311,17 +292,14 @@ ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, 
 }
 
 ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state) {
-    if (!ak_call_allowed(instance, call)) {
-        return AK_STATUS_ERROR;
-    }
-    const char *function = call->name;
-    if (!ak_not_null(instance, function, state, instance->layer->state_format.kind_argument)) {
+    if (!ak_call_allowed(instance, call) ||
+        !ak_not_null(instance, call->name, state, instance->layer->state_format.kind_argument)) {
         return AK_STATUS_ERROR;
     }
     if (*state == NULL) {
         return AK_STATUS_OK; /* nothing to free, as with free(NULL) */
     }
-    ak_fmu_state *s = known_state(instance, function, *state);
+    ak_fmu_state *s = known_state(instance, call->name, *state);
     if (s == NULL) {
         return AK_STATUS_ERROR;
     }
@@ -337,12 +315,8 @@ ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call,
 
 ak_status ak_serialized_fmu_state_size(ak_instance *instance, const ak_function_rule *call,
                                        void *state, size_t *size) {
-    if (!ak_call_allowed(instance, call)) {
-        return AK_STATUS_ERROR;
-    }
-    const char *function = call->name;
-    if (!ak_not_null(instance, function, size, "size") ||
-        known_state(instance, function, state) == NULL) {
+    if (!ak_call_allowed(instance, call) || !ak_not_null(instance, call->name, size, "size") ||
+        known_state(instance, call->name, state) == NULL) {
         return AK_STATUS_ERROR;
     }
     *size = state_size(instance);
@@ -354,14 +328,13 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *function = call->name;
-    const ak_fmu_state *s = known_state(instance, function, state);
-    if (s == NULL || !ak_not_null(instance, function, bytes, "serializedState")) {
+    const ak_fmu_state *s = known_state(instance, call->name, state);
+    if (s == NULL || !ak_not_null(instance, call->name, bytes, "serializedState")) {
         return AK_STATUS_ERROR;
     }
     if (size < state_size(instance)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: size = %zu is too small; the state needs %zu bytes (%s)", function, size,
+               "%s: size = %zu is too small; the state needs %zu bytes (%s)", call->name, size,
                state_size(instance), instance->layer->state_format.sizer);
         return AK_STATUS_ERROR;
     }
@@ -371,17 +344,13 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *
 
 ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
                                    const unsigned char bytes[], size_t size, void **state) {
-    if (!ak_call_allowed(instance, call)) {
+    if (!ak_call_allowed(instance, call) ||
+        !ak_not_null(instance, call->name, bytes, "serializedState") ||
+        !ak_not_null(instance, call->name, state, instance->layer->state_format.kind_argument) ||
+        !valid(instance, call->name, bytes, size)) {
         return AK_STATUS_ERROR;
     }
-    const char *function = call->name;
-    ak_state_content content;
-    if (!ak_not_null(instance, function, bytes, "serializedState") ||
-        !ak_not_null(instance, function, state, instance->layer->state_format.kind_argument) ||
-        !decode(instance, function, bytes, size, &content)) {
-        return AK_STATUS_ERROR;
-    }
-    ak_fmu_state *s = state_to_fill(instance, function, state);
+    ak_fmu_state *s = state_to_fill(instance, call->name, state);
     if (s == NULL) {
         return AK_STATUS_ERROR;
     }

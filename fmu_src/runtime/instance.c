@@ -43,13 +43,12 @@ static void log_for_model(void *owner, ak_log_category category, ak_status statu
 
 bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
                     const char *count_name, const char *pointer_name) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
-           pointer_name, count_name, n);
-    return false;
-}
-
-bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, name);
+    if (count_name == NULL) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, pointer_name);
+    } else {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
+               pointer_name, count_name, n);
+    }
     return false;
 }
 
@@ -124,10 +123,10 @@ void ak_instance_reset(ak_instance *instance) {
     for (unsigned int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
         const ak_variable *variable = ak_variable_of(vr);
         instance->real_role[vr] = (unsigned char)real_role(variable);
-        const unsigned int n = instance->layer->elements_at != NULL ? instance->layer->elements_at(vr)
-                               : variable != NULL                ? 1u
-                                                                 : 0u;
-        instance->elements[vr] = (unsigned char)n;
+        instance->elements[vr] = (unsigned char)(variable != NULL ? 1 : 0);
+        if (instance->layer->elements_at != NULL) {
+            instance->elements[vr] = (unsigned char)instance->layer->elements_at(vr);
+        }
         instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
     }
     memset(instance->data.input_derivatives, 0, sizeof instance->data.input_derivatives);
@@ -173,11 +172,14 @@ static ak_eval_status evaluate(ak_instance *instance, bool with_lazy) {
     outputs->stale = false;
     outputs->lazy_stale = !both || outputs->status == AK_EVAL_FAILED;
     outputs->evaluations++;
-    if (ak_log_on(instance, AK_LOG_CALLS) && outputs->status == AK_EVAL_FAILED) {
-        ak_log(instance, AK_LOG_CALLS, AK_STATUS_DISCARD, /* the model logged why */
+    if (!ak_log_on(instance, AK_LOG_CALLS)) {
+        return outputs->status;
+    }
+    if (outputs->status == AK_EVAL_FAILED) { /* the model logged why */
+        ak_log(instance, AK_LOG_CALLS, AK_STATUS_DISCARD,
                "kinematics evaluation %lu refused: the outputs keep their last valid values",
                outputs->evaluations);
-    } else if (ak_log_on(instance, AK_LOG_CALLS)) {
+    } else {
         ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "kinematics evaluated (evaluation %lu%s)",
                outputs->evaluations, both ? ", with the lazy outputs" : "");
     }

@@ -173,24 +173,24 @@ const char *ak_state_name(const ak_instance *instance, ak_state state);
  * logCalls. False for a NULL instance. */
 bool ak_call_checked(const ak_instance *instance, const ak_function_rule *rule);
 
-/* The check at the top of every entry point taking an instance: false for NULL, a function of the
- * other interface or a state not allowed (both logged). Inline, so that a legal call with the
- * trace off costs two mask tests and no call. */
-static inline bool ak_call_passes(const ak_instance *instance, const ak_function_rule *rule);
-static inline bool ak_call_allowed(const ak_instance *instance, const ak_function_rule *rule) {
-    return ak_call_passes(instance, rule) || ak_call_checked(instance, rule);
-}
-
-/* The test of ak_call_allowed alone: true for a legal call with the trace off, nothing logged. */
+/* True for a legal call with the trace off, nothing logged. Inline, so that it costs two mask
+ * tests and no call; with the table a constant, the compiler drops the interface test of most
+ * functions. */
 static inline bool ak_call_passes(const ak_instance *instance, const ak_function_rule *rule) {
-    /* With the table a constant, the compiler drops the interface test of most functions. */
     const bool both = rule->interfaces == (AK_MODEL_EXCHANGE | AK_CO_SIMULATION);
     return instance != NULL && (rule->allowed_states & (unsigned int)instance->state) != 0 &&
            (both || (rule->interfaces & (unsigned int)instance->interface) != 0) &&
            !ak_log_on(instance, AK_LOG_CALLS);
 }
 
-/* Logs "<function>: <pointer_name> is NULL with <count_name> = <n>"; false. */
+/* The check at the top of every entry point taking an instance: false for NULL, a function of the
+ * other interface or a state not allowed (both logged). */
+static inline bool ak_call_allowed(const ak_instance *instance, const ak_function_rule *rule) {
+    return ak_call_passes(instance, rule) || ak_call_checked(instance, rule);
+}
+
+/* Logs "<function>: <pointer_name> is NULL", with " with <count_name> = <n>" if count_name is not
+ * NULL; false. */
 bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
                     const char *count_name, const char *pointer_name);
 /* NULL is fine only when there is nothing to read or write. */
@@ -200,11 +200,9 @@ static inline bool ak_given(const ak_instance *instance, const char *function, s
     return n == 0 || pointer != NULL ||
            ak_refuse_null(instance, function, n, count_name, pointer_name);
 }
-/* Logs "<function>: <name> is NULL"; false. */
-bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name);
 static inline bool ak_not_null(const ak_instance *instance, const char *function,
                                const void *pointer, const char *name) {
-    return pointer != NULL || ak_refuse_null_pointer(instance, function, name);
+    return pointer != NULL || ak_refuse_null(instance, function, 0, NULL, name);
 }
 /* The call of a getter or setter allowed, and vr and values given when there is anything to
  * read or write. */
