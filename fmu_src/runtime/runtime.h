@@ -7,9 +7,7 @@
 #ifndef ANGULAR_KINEMATICS_RUNTIME_H
 #define ANGULAR_KINEMATICS_RUNTIME_H
 
-#include <stdbool.h>
 #include <string.h>
-#include <stddef.h>
 
 #include "instance.h"
 
