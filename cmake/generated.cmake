@@ -38,13 +38,11 @@ set(AK_CORE_HEADERS
   fmu_src/core/quaternion_kinematics.h)
 set(AK_MODEL_COMMON_SOURCES
   fmu_src/runtime/instance.c
-  fmu_src/runtime/outputs.c
   fmu_src/runtime/lifecycle.c
   fmu_src/runtime/values.c
   fmu_src/runtime/stepping.c
   fmu_src/runtime/continuous.c
   fmu_src/runtime/derivatives.c
-  fmu_src/runtime/state_image.c
   fmu_src/runtime/fmu_states.c
   fmu_src/models/model_log.c
   fmu_src/models/model_derived.c)
@@ -61,8 +59,6 @@ set(AK_FMI2_HEADERS
   fmu_src/fmi2/fmi2_layer.h
   fmu_src/runtime/runtime.h
   fmu_src/runtime/instance.h
-  fmu_src/runtime/outputs.h
-  fmu_src/runtime/state_image.h
   fmu_src/common/ak_bytes.h
   fmu_src/common/ak_compiler.h
   fmu_src/models/model.h
@@ -78,8 +74,6 @@ set(AK_FMI3_HEADERS
   fmu_src/fmi3/fmi3_layer.h
   fmu_src/runtime/runtime.h
   fmu_src/runtime/instance.h
-  fmu_src/runtime/outputs.h
-  fmu_src/runtime/state_image.h
   fmu_src/common/ak_bytes.h
   fmu_src/common/ak_compiler.h
   fmu_src/models/model.h

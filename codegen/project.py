@@ -111,12 +111,11 @@ def _core_files(first, suffix):
 CORE_SOURCES = _core_files(_CORE_SOURCES_FIRST, ".c")
 CORE_HEADERS = _core_files(_CORE_HEADERS_FIRST, ".h")
 # The FMI runtime under both FMI layers (fmu_src/runtime/), FMI-independent.
-RUNTIME_SOURCES = ["runtime/instance.c", "runtime/outputs.c", "runtime/lifecycle.c",
-                   "runtime/values.c", "runtime/stepping.c", "runtime/continuous.c",
-                   "runtime/derivatives.c", "runtime/state_image.c", "runtime/fmu_states.c"]
-RUNTIME_HEADERS = ["runtime/runtime.h", "runtime/instance.h", "runtime/outputs.h",
-                   "runtime/state_image.h", "common/ak_bytes.h", "common/ak_compiler.h",
-                   "models/model.h", "models/log_categories.h"]
+RUNTIME_SOURCES = ["runtime/instance.c", "runtime/lifecycle.c", "runtime/values.c",
+                   "runtime/stepping.c", "runtime/continuous.c", "runtime/derivatives.c",
+                   "runtime/fmu_states.c"]
+RUNTIME_HEADERS = ["runtime/runtime.h", "runtime/instance.h", "common/ak_bytes.h",
+                   "common/ak_compiler.h", "models/model.h", "models/log_categories.h"]
 # beside every model: the runtime, the model-side logging and the chain rule of derived outputs
 MODEL_SOURCES = RUNTIME_SOURCES + ["models/model_log.c", "models/model_derived.c"]
 FMI2_SOURCES = ["fmi2/fmi2_layer.c", "fmi2/fmi2_state_machine.c", "fmi2/fmi2_lifecycle.c",

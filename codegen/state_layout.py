@@ -2,7 +2,7 @@
 the size of every model's state, FMI 2.0 and FMI 3.0, are generated from FIELDS and FORMATS
 (between the markers of the section "FMU state"); tests/python/test_documentation.py checks the
 sizes and the header against what each built FMU serializes (fmi2SerializedFMUstateSize,
-fmi3SerializedFMUStateSize). The C code that writes it: fmu_src/runtime/state_image.c.
+fmi3SerializedFMUStateSize). The C code that writes it: fmu_src/runtime/fmu_states.c.
 
 A size is (bytes, bytes per value reference, bytes per input): N is a model's number of value
 references (its highest + 1), I its number of inputs."""

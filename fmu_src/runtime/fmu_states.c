@@ -1,64 +1,97 @@
-/* FMU states for both FMI versions: get, set, free, serialize, deserialize. A state holds its
- * serialized form (runtime/state_image.h), so there is one layout and one validator; each
- * layer names its format (magic, version, whether input derivatives are in it).
+/* FMU states for both FMI versions: get, set, free, serialize, deserialize, and their byte image,
+ * in the format each layer names (ak_state_format). A state holds its serialized form: one layout
+ * and one validator. The layout is codegen/state_layout.py's (docs/capabilities.md#fmu-state;
+ * tests/python/test_documentation.py reads the offsets back from real states).
  *
- * What is not in a state: the instance name, the callbacks and the debug-logging settings
- * belong to the instance, not to the simulation, and stay as they are when a state is set. A
- * byte string that is too short or long, carries another magic, version or token, fails the
- * checksum, or holds values the instance could never have is refused with a message saying
- * which; the instance and the caller's state are then left as they were. */
+ * The instance name, the callbacks and the logging settings belong to the instance, not to the
+ * simulation: setting a state leaves them. */
+#include <math.h>
 #include <string.h>
 
+#include "ak_bytes.h"
 #include "runtime.h"
 
-/* The in-memory FMU state: the bytes, in the instance's list of live states. A pointer the
- * importer gives back is looked up in that list by address, never dereferenced first: a stray
- * or freed pointer is refused without reading the memory it points to. */
+enum {
+    OFFSET_MAGIC = 0,
+    OFFSET_VERSION = 8,
+    OFFSET_SIZE = 12,
+    OFFSET_TOKEN = 16,
+    OFFSET_INTERFACE = 56,
+    OFFSET_STATE = 60,
+    OFFSET_TIME = 64,
+    OFFSET_STOP_TIME = 72,
+    OFFSET_STOP_TIME_DEFINED = 80,
+    OFFSET_RESERVED = 84,
+    OFFSET_VALUES = 88,
+    TOKEN_FIELD = 40,
+    MAX_SIZE = OFFSET_VALUES + 8 * AK_MAX_VARIABLES +
+               8 * AK_MAX_INPUTS * AK_MAX_INPUT_DERIVATIVE_ORDER + 4
+};
+
+/* The in-memory FMU state, in the instance's list of live states. A pointer the importer gives
+ * back is looked up in that list by address, never dereferenced first: a stray or freed pointer
+ * is refused without reading the memory it points to. */
 struct ak_fmu_state_s {
     struct ak_fmu_state_s *next;
-    unsigned char bytes[AK_STATE_IMAGE_MAX_SIZE];
+    unsigned char bytes[MAX_SIZE];
 };
 typedef struct ak_fmu_state_s ak_fmu_state;
 
-/* The decoded content of a state. */
-typedef struct {
-    ak_state_header header;
-    double values[AK_MAX_VARIABLES];
-    double input_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
-} ak_state_content;
-
-static size_t state_size(const ak_instance *instance) {
-    return ak_state_image_size(&instance->layer->state_format);
+/* Where input k's derivative of order n + 1 is. */
+static size_t offset_derivative(int k, int n) {
+    return OFFSET_VALUES + 8u * (size_t)AK_MODEL.n_value_references +
+           8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n);
 }
 
-/* The interface and state fields of the image, in the layer's numbering. */
+/* After the input derivatives, if the format has them. */
+static size_t offset_checksum(const ak_instance *instance) {
+    const bool derivatives = instance->layer->state_format.input_derivatives;
+    return offset_derivative(derivatives ? AK_MODEL.n_inputs : 0, 0);
+}
+
+static size_t state_size(const ak_instance *instance) {
+    return offset_checksum(instance) + 4u;
+}
+
+/* The image's interface field: 0 model exchange, 1 co-simulation. */
 static uint32_t image_interface(ak_interface interface) {
     return interface == AK_MODEL_EXCHANGE ? 0u : 1u;
 }
 
-static uint32_t image_state(const ak_instance *instance) {
-    for (int bit = 0; bit < AK_N_STATES; bit++) {
+static void encode(const ak_instance *instance, unsigned char bytes[MAX_SIZE]) {
+    const ak_state_format *format = &instance->layer->state_format;
+    const size_t size = state_size(instance);
+    memset(bytes, 0, size);
+    memcpy(bytes + OFFSET_MAGIC, format->magic, 8);
+    ak_put_u32(bytes + OFFSET_VERSION, format->version);
+    ak_put_u32(bytes + OFFSET_SIZE, (uint32_t)size);
+    memcpy(bytes + OFFSET_TOKEN, AK_MODEL.guid, strlen(AK_MODEL.guid));
+    ak_put_u32(bytes + OFFSET_INTERFACE, image_interface(instance->interface));
+    for (int bit = 0; bit < AK_N_STATES; bit++) { /* the state in the layer's numbering */
         if (instance->layer->image_states[bit] == instance->state) {
-            return 1u << bit;
+            ak_put_u32(bytes + OFFSET_STATE, 1u << bit);
         }
     }
-    return 0u; /* never: every state an instance enters has a bit */
+    ak_put_f64(bytes + OFFSET_TIME, instance->time);
+    ak_put_f64(bytes + OFFSET_STOP_TIME, instance->stop_time);
+    ak_put_u32(bytes + OFFSET_STOP_TIME_DEFINED, instance->stop_time_defined ? 1u : 0u);
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        ak_put_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr, instance->data.values[vr]);
+    }
+    for (int k = 0; format->input_derivatives && k < AK_MODEL.n_inputs; k++) {
+        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+            ak_put_f64(bytes + offset_derivative(k, n), instance->data.input_derivatives[k][n]);
+        }
+    }
+    ak_put_u32(bytes + offset_checksum(instance), ak_crc32(bytes, offset_checksum(instance)));
 }
 
-static void encode(const ak_instance *instance, unsigned char bytes[AK_STATE_IMAGE_MAX_SIZE]) {
-    const ak_state_header header = {image_interface(instance->interface), image_state(instance),
-                                    instance->time, instance->stop_time,
-                                    instance->stop_time_defined};
-    ak_state_image_write(&instance->layer->state_format, &header, &instance->data, bytes);
-}
-
-/* The interface of an image as an adjective ("a model-exchange instance") and as a noun. */
-static const char *interface_adjective(uint32_t interface) {
-    return interface == 0 ? "model-exchange" : interface == 1 ? "co-simulation" : "unknown";
-}
-
-static const char *interface_noun(uint32_t interface) {
-    return interface == 0 ? "model exchange" : "co-simulation";
+/* The interface of an image as an adjective ("a model-exchange instance") or as a noun. */
+static const char *interface_words(uint32_t interface, bool adjective) {
+    if (interface == 0) {
+        return adjective ? "model-exchange" : "model exchange";
+    }
+    return interface == 1 ? "co-simulation" : "unknown";
 }
 
 /* The state of an image's state field that an instance of its interface can be in, or 0. */
@@ -72,25 +105,111 @@ static ak_state decoded_state(const ak_layer *layer, uint32_t code, uint32_t int
     return (ak_state)0;
 }
 
-/* Checks a byte string from its length to its last value and decodes it; on failure logs why
- * (as function) and leaves content unspecified. Nothing of the instance is touched. */
-static bool decode(const ak_instance *instance, const char *function, const unsigned char *bytes,
-                   size_t size, ak_state_content *content) {
+/* The checks of the image as such: length, magic, version, size, checksum, token. */
+static bool image_intact(const ak_instance *instance, const char *function,
+                         const unsigned char *bytes, size_t size) {
     const ak_state_format *format = &instance->layer->state_format;
-    if (!ak_state_image_check(format, &instance->data, function, bytes, size, &content->header)) {
+    if (size < OFFSET_TOKEN || memcmp(bytes + OFFSET_MAGIC, format->magic, 8) != 0) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: the %zu bytes are not an %s %s (%s)",
+               function, size, AK_MODEL.model_identifier, format->kind,
+               size < OFFSET_TOKEN ? "too short for the header" : "wrong magic bytes");
         return false;
     }
-    const uint32_t interface = content->header.interface;
+    const uint32_t version = ak_get_u32(bytes + OFFSET_VERSION);
+    if (version != format->version) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: FMU state format version %u is not supported (this binary reads version %u)",
+               function, version, format->version);
+        return false;
+    }
+    const size_t expected = state_size(instance);
+    const uint32_t declared = ak_get_u32(bytes + OFFSET_SIZE);
+    if (size != expected || declared != expected) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: the FMU state is %zu bytes long and declares %u bytes; format version %u of "
+               "%s has %zu bytes (truncated or extended)",
+               function, size, declared, format->version, AK_MODEL.model_identifier, expected);
+        return false;
+    }
+    const uint32_t stored = ak_get_u32(bytes + offset_checksum(instance));
+    const uint32_t computed = ak_crc32(bytes, offset_checksum(instance));
+    if (stored != computed) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: the FMU state is corrupt: its CRC-32 is 0x%08x, the bytes give 0x%08x",
+               function, stored, computed);
+        return false;
+    }
+    const char *token = (const char *)bytes + OFFSET_TOKEN; /* NUL-padded, or all 40 bytes */
+    if (strncmp(token, AK_MODEL.guid, TOKEN_FIELD) != 0) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: the FMU state is of an FMU with %s \"%.40s\", not this one's (%s) \"%s\"",
+               function, format->token_name, token, AK_MODEL.model_identifier, AK_MODEL.guid);
+        return false;
+    }
+    return true;
+}
+
+/* Checks a byte string from its length to its last value; logs why not. */
+static bool valid(const ak_instance *instance, const char *function, const unsigned char *bytes,
+                  size_t size) {
+    if (!image_intact(instance, function, bytes, size)) {
+        return false;
+    }
+    const ak_state_format *format = &instance->layer->state_format;
+    const uint32_t interface = ak_get_u32(bytes + OFFSET_INTERFACE);
     if (interface != image_interface(instance->interface)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: the FMU state is of a %s instance (%s %u); this instance is for %s",
-               function, interface_adjective(interface), format->interface_name, interface,
-               interface_noun(image_interface(instance->interface)));
+               function, interface_words(interface, true), format->interface_name, interface,
+               interface_words(image_interface(instance->interface), false));
         return false;
     }
-    const bool possible = decoded_state(instance->layer, content->header.state, interface) != 0;
-    return ak_state_image_read(format, &instance->data, function, bytes, &content->header,
-                               possible, content->values, content->input_derivatives);
+    const uint32_t state = ak_get_u32(bytes + OFFSET_STATE);
+    const uint32_t stop_time_defined = ak_get_u32(bytes + OFFSET_STOP_TIME_DEFINED);
+    const double time = ak_get_f64(bytes + OFFSET_TIME);
+    const double stop_time = ak_get_f64(bytes + OFFSET_STOP_TIME);
+    if (decoded_state(instance->layer, state, interface) == 0 || stop_time_defined > 1 ||
+        ak_get_u32(bytes + OFFSET_RESERVED) != 0 || !isfinite(time) || !isfinite(stop_time)) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: the FMU state holds an impossible header (state 0x%x, time %g, stop time %g, "
+               "stop time defined %u)",
+               function, state, time, stop_time, stop_time_defined);
+        return false;
+    }
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        const ak_variable *variable = ak_variable_of((unsigned int)vr);
+        const double value = ak_get_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr);
+        if (variable == NULL) {
+            continue; /* a hole of the table: never read */
+        }
+        if (!isfinite(value)) {
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: the FMU state holds %s = %g, which is not finite", function,
+                   variable->name, value);
+            return false;
+        }
+        const bool integral = variable->type != AK_TYPE_INTEGER || value == floor(value);
+        if (variable->causality == AK_CAUSALITY_PARAMETER &&
+            (!integral || ak_parameter_refusal(variable, value) != NULL)) {
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: the FMU state holds the parameter %s = %.17g, which it cannot have",
+                   function, variable->name, value);
+            return false;
+        }
+    }
+    for (int k = 0; format->input_derivatives && k < AK_MODEL.n_inputs; k++) {
+        for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+            const double d = ak_get_f64(bytes + offset_derivative(k, n));
+            if (!isfinite(d)) {
+                ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                       "%s: the FMU state holds a derivative of order %d of %s = %g, which is not "
+                       "finite",
+                       function, n + 1, AK_MODEL.variables[k].name, d);
+                return false;
+            }
+        }
+    }
+    return true;
 }
 
 /* A state pointer the importer gives back: ours, still alive, or a logged error. */
@@ -127,14 +246,11 @@ static ak_fmu_state *state_to_fill(ak_instance *instance, const char *function, 
 }
 
 ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state) {
-    if (!ak_call_allowed(instance, call)) {
+    if (!ak_call_allowed(instance, call) ||
+        !ak_not_null(instance, call->name, state, instance->layer->state_format.kind_argument)) {
         return AK_STATUS_ERROR;
     }
-    const char *function = call->name;
-    if (!ak_not_null(instance, function, state, instance->layer->state_format.kind_argument)) {
-        return AK_STATUS_ERROR;
-    }
-    ak_fmu_state *s = state_to_fill(instance, function, state);
+    ak_fmu_state *s = state_to_fill(instance, call->name, state);
     if (s == NULL) {
         return AK_STATUS_ERROR;
     }
@@ -147,21 +263,26 @@ ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, 
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *function = call->name;
-    const ak_fmu_state *s = known_state(instance, function, state);
-    ak_state_content content;
-    if (s == NULL || !decode(instance, function, s->bytes, state_size(instance), &content)) {
+    const ak_fmu_state *s = known_state(instance, call->name, state);
+    if (s == NULL || !valid(instance, call->name, s->bytes, state_size(instance))) {
         return AK_STATUS_ERROR;
     }
-    instance->state = decoded_state(instance->layer, content.header.state, content.header.interface);
-    instance->time = content.header.time;
-    instance->stop_time_defined = content.header.stop_time_defined;
-    instance->stop_time = content.header.stop_time;
-    memcpy(instance->data.values, content.values,
-           sizeof(double) * (size_t)AK_MODEL.n_value_references);
+    const unsigned char *bytes = s->bytes;
+    instance->state = decoded_state(instance->layer, ak_get_u32(bytes + OFFSET_STATE),
+                                    image_interface(instance->interface));
+    instance->time = ak_get_f64(bytes + OFFSET_TIME);
+    instance->stop_time_defined = ak_get_u32(bytes + OFFSET_STOP_TIME_DEFINED) == 1;
+    instance->stop_time = ak_get_f64(bytes + OFFSET_STOP_TIME);
+    for (int vr = 0; vr < AK_MODEL.n_value_references; vr++) {
+        instance->data.values[vr] = ak_get_f64(bytes + OFFSET_VALUES + 8 * (size_t)vr);
+    }
     if (instance->layer->state_format.input_derivatives) {
-        memcpy(instance->data.input_derivatives, content.input_derivatives,
-               sizeof content.input_derivatives[0] * (size_t)AK_MODEL.n_inputs);
+        for (int k = 0; k < AK_MODEL.n_inputs; k++) {
+            for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
+                const double d = ak_get_f64(bytes + offset_derivative(k, n));
+                instance->data.input_derivatives[k][n] = d;
+            }
+        }
         ak_input_derivatives_changed(instance);
     }
     /* The outputs are recomputed from the restored inputs and parameters, not trusted from the
@@ -171,17 +292,14 @@ ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, 
 }
 
 ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state) {
-    if (!ak_call_allowed(instance, call)) {
-        return AK_STATUS_ERROR;
-    }
-    const char *function = call->name;
-    if (!ak_not_null(instance, function, state, instance->layer->state_format.kind_argument)) {
+    if (!ak_call_allowed(instance, call) ||
+        !ak_not_null(instance, call->name, state, instance->layer->state_format.kind_argument)) {
         return AK_STATUS_ERROR;
     }
     if (*state == NULL) {
         return AK_STATUS_OK; /* nothing to free, as with free(NULL) */
     }
-    ak_fmu_state *s = known_state(instance, function, *state);
+    ak_fmu_state *s = known_state(instance, call->name, *state);
     if (s == NULL) {
         return AK_STATUS_ERROR;
     }
@@ -197,12 +315,8 @@ ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call,
 
 ak_status ak_serialized_fmu_state_size(ak_instance *instance, const ak_function_rule *call,
                                        void *state, size_t *size) {
-    if (!ak_call_allowed(instance, call)) {
-        return AK_STATUS_ERROR;
-    }
-    const char *function = call->name;
-    if (!ak_not_null(instance, function, size, "size") ||
-        known_state(instance, function, state) == NULL) {
+    if (!ak_call_allowed(instance, call) || !ak_not_null(instance, call->name, size, "size") ||
+        known_state(instance, call->name, state) == NULL) {
         return AK_STATUS_ERROR;
     }
     *size = state_size(instance);
@@ -214,14 +328,13 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *function = call->name;
-    const ak_fmu_state *s = known_state(instance, function, state);
-    if (s == NULL || !ak_not_null(instance, function, bytes, "serializedState")) {
+    const ak_fmu_state *s = known_state(instance, call->name, state);
+    if (s == NULL || !ak_not_null(instance, call->name, bytes, "serializedState")) {
         return AK_STATUS_ERROR;
     }
     if (size < state_size(instance)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: size = %zu is too small; the state needs %zu bytes (%s)", function, size,
+               "%s: size = %zu is too small; the state needs %zu bytes (%s)", call->name, size,
                state_size(instance), instance->layer->state_format.sizer);
         return AK_STATUS_ERROR;
     }
@@ -231,17 +344,13 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *
 
 ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
                                    const unsigned char bytes[], size_t size, void **state) {
-    if (!ak_call_allowed(instance, call)) {
+    if (!ak_call_allowed(instance, call) ||
+        !ak_not_null(instance, call->name, bytes, "serializedState") ||
+        !ak_not_null(instance, call->name, state, instance->layer->state_format.kind_argument) ||
+        !valid(instance, call->name, bytes, size)) {
         return AK_STATUS_ERROR;
     }
-    const char *function = call->name;
-    ak_state_content content;
-    if (!ak_not_null(instance, function, bytes, "serializedState") ||
-        !ak_not_null(instance, function, state, instance->layer->state_format.kind_argument) ||
-        !decode(instance, function, bytes, size, &content)) {
-        return AK_STATUS_ERROR;
-    }
-    ak_fmu_state *s = state_to_fill(instance, function, state);
+    ak_fmu_state *s = state_to_fill(instance, call->name, state);
     if (s == NULL) {
         return AK_STATUS_ERROR;
     }

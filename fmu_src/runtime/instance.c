@@ -1,5 +1,4 @@
-/* The instance's common part: start, reset, release, logging, the call check, and the lazy
- * evaluation of the outputs (runtime/instance.h). */
+/* The instance: start, reset, logging, the call check, and the lazy evaluation of the outputs. */
 #include "instance.h"
 
 #include <stdarg.h>
@@ -44,13 +43,12 @@ static void log_for_model(void *owner, ak_log_category category, ak_status statu
 
 bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
                     const char *count_name, const char *pointer_name) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
-           pointer_name, count_name, n);
-    return false;
-}
-
-bool ak_refuse_null_pointer(const ak_instance *instance, const char *function, const char *name) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, name);
+    if (count_name == NULL) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL", function, pointer_name);
+    } else {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s is NULL with %s = %zu", function,
+               pointer_name, count_name, n);
+    }
     return false;
 }
 
@@ -87,52 +85,32 @@ static ak_real_role real_role(const ak_variable *variable) {
     if (variable == NULL || variable->type != AK_TYPE_REAL) {
         return AK_REAL_ABSENT;
     }
-    switch (variable->causality) {
-    case AK_CAUSALITY_INPUT:
+    if (variable->causality == AK_CAUSALITY_INPUT) {
         return AK_REAL_INPUT;
-    case AK_CAUSALITY_PARAMETER:
-        return AK_REAL_PARAMETER;
-    case AK_CAUSALITY_OUTPUT:
-    default:
-        if (variable->causality == AK_CAUSALITY_OUTPUT &&
-            ak_state_index(AK_MODEL.state_vrs, variable->value_reference) >= 0) {
-            return AK_REAL_STATE_OUTPUT;
-        }
-        return variable->group == AK_GROUP_DERIVED ? AK_REAL_DERIVED_OUTPUT
-               : variable->group == AK_GROUP_LAZY  ? AK_REAL_LAZY_OUTPUT
-                                                   : AK_REAL_MAIN_OUTPUT;
     }
+    if (variable->causality == AK_CAUSALITY_PARAMETER) {
+        return AK_REAL_PARAMETER;
+    }
+    if (variable->causality == AK_CAUSALITY_OUTPUT &&
+        ak_state_index(AK_MODEL.state_vrs, variable->value_reference) >= 0) {
+        return AK_REAL_STATE_OUTPUT;
+    }
+    return variable->group == AK_GROUP_DERIVED ? AK_REAL_DERIVED_OUTPUT
+           : variable->group == AK_GROUP_LAZY  ? AK_REAL_LAZY_OUTPUT
+                                               : AK_REAL_MAIN_OUTPUT;
 }
 
-/* The log categories of a new or reset instance: every one when logging was asked for at
- * instantiation. Without it, FMI 2 still reports errors and warnings unless switched off; FMI 3
- * nothing but errors, which its layer always logs (3.0.3: "If loggingOn is false [...] the FMU
- * must not call logMessage, except for fmi3Error and fmi3Fatal"). */
-static void reset_log_categories(ak_instance *instance) {
-    const bool quiet_by_default = instance->layer->errors_always_logged;
+void ak_instance_reset(ak_instance *instance) {
+    /* Every category when logging was asked for at instantiation. Without it, FMI 2 still reports
+     * errors and warnings unless switched off; FMI 3 nothing but errors, which its layer always
+     * logs (3.0.3: "If loggingOn is false [...] the FMU must not call logMessage, except for
+     * fmi3Error and fmi3Fatal"). */
     for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
         instance->log_enabled[category] =
             instance->has_logger &&
             (instance->logging_on_at_instantiation ||
-             (category != AK_LOG_CALLS && !quiet_by_default));
+             (category != AK_LOG_CALLS && !instance->layer->errors_always_logged));
     }
-}
-
-/* Every value at its start, no input derivative, the states from the parameters. */
-static void reset_model_data(ak_model_data *data) {
-    for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
-        const ak_variable *variable = ak_variable_of((unsigned int)vr);
-        data->values[vr] = variable != NULL ? variable->start : 0.0;
-    }
-    memset(data->input_derivatives, 0, sizeof data->input_derivatives);
-    data->any_input_derivative = false;
-    if (AK_MODEL.initialize != NULL) {
-        (void)AK_MODEL.initialize(data); /* the start values always give a state */
-    }
-}
-
-void ak_instance_reset(ak_instance *instance) {
-    reset_log_categories(instance);
     instance->data.log = log_for_model;
     instance->data.owner = instance;
     instance->state = AK_INSTANTIATED;
@@ -142,17 +120,21 @@ void ak_instance_reset(ak_instance *instance) {
     instance->calling = NULL;
     instance->kept_get.nvr = 0;
     instance->kept_set.nvr = 0;
-    for (int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
-        instance->real_role[vr] = (unsigned char)real_role(ak_variable_of((unsigned int)vr));
-    }
     for (unsigned int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
-        const unsigned int n = instance->layer->elements_at != NULL ? instance->layer->elements_at(vr)
-                               : ak_variable_of(vr) != NULL      ? 1u
-                                                                 : 0u;
-        instance->elements[vr] = (unsigned char)n;
+        const ak_variable *variable = ak_variable_of(vr);
+        instance->real_role[vr] = (unsigned char)real_role(variable);
+        instance->elements[vr] = (unsigned char)(variable != NULL ? 1 : 0);
+        if (instance->layer->elements_at != NULL) {
+            instance->elements[vr] = (unsigned char)instance->layer->elements_at(vr);
+        }
+        instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
     }
-    reset_model_data(&instance->data);
-    ak_outputs_reset(&instance->outputs);
+    memset(instance->data.input_derivatives, 0, sizeof instance->data.input_derivatives);
+    instance->data.any_input_derivative = false;
+    if (AK_MODEL.initialize != NULL) {
+        (void)AK_MODEL.initialize(&instance->data); /* the start values always give a state */
+    }
+    instance->outputs = (ak_outputs){true, true, true, AK_EVAL_OK, 0};
 }
 
 bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char *function,
@@ -173,26 +155,53 @@ bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char 
     return true;
 }
 
+/* The main group, and the lazy group with it when with_lazy and the model can do both at once. */
+static ak_eval_status evaluate(ak_instance *instance, bool with_lazy) {
+    ak_outputs *outputs = &instance->outputs;
+    /* Until initialization ends the states follow the parameters they start from. */
+    if ((instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) != 0 &&
+        AK_MODEL.initialize != NULL && AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
+        outputs->status = AK_EVAL_FAILED;
+        outputs->stale = false;
+        return AK_EVAL_FAILED;
+    }
+    const bool both = with_lazy && AK_MODEL.evaluate_all != NULL;
+    outputs->status = both ? AK_MODEL.evaluate_all(&instance->data)
+                           : AK_MODEL.evaluate(&instance->data);
+    outputs->derived_stale = true;
+    outputs->stale = false;
+    outputs->lazy_stale = !both || outputs->status == AK_EVAL_FAILED;
+    outputs->evaluations++;
+    if (!ak_log_on(instance, AK_LOG_CALLS)) {
+        return outputs->status;
+    }
+    if (outputs->status == AK_EVAL_FAILED) { /* the model logged why */
+        ak_log(instance, AK_LOG_CALLS, AK_STATUS_DISCARD,
+               "kinematics evaluation %lu refused: the outputs keep their last valid values",
+               outputs->evaluations);
+    } else {
+        ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "kinematics evaluated (evaluation %lu%s)",
+               outputs->evaluations, both ? ", with the lazy outputs" : "");
+    }
+    return outputs->status;
+}
+
 ak_status ak_instance_update(ak_instance *instance, ak_group upto) {
-    unsigned int ran;
-    const bool in_initialization =
-        (instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) != 0;
-    const ak_eval_status status =
-        ak_outputs_update(&instance->outputs, &instance->data, in_initialization, upto, &ran);
-    if (ran != 0 && ak_log_on(instance, AK_LOG_CALLS)) {
-        if ((ran & AK_RAN_MAIN) && status == AK_EVAL_FAILED) { /* the model logged why */
-            ak_log(instance, AK_LOG_CALLS, AK_STATUS_DISCARD,
-                   "kinematics evaluation %lu refused: the outputs keep their last valid values",
-                   instance->outputs.evaluations);
-        } else if (ran & AK_RAN_MAIN) {
-            ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "kinematics evaluated (evaluation %lu%s)",
-                   instance->outputs.evaluations,
-                   (ran & AK_RAN_ALL) ? ", with the lazy outputs" : "");
-        }
-        if (ran & AK_RAN_LAZY) {
+    ak_outputs *outputs = &instance->outputs;
+    const bool with_lazy = upto >= AK_GROUP_LAZY;
+    const ak_eval_status status = outputs->stale ? evaluate(instance, with_lazy) : outputs->status;
+    if (with_lazy && outputs->lazy_stale && status != AK_EVAL_FAILED && AK_MODEL.evaluate_lazy) {
+        AK_MODEL.evaluate_lazy(&instance->data);
+        outputs->derived_stale = true;
+        outputs->lazy_stale = false;
+        if (ak_log_on(instance, AK_LOG_CALLS)) {
             ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "lazy outputs evaluated");
         }
-        if (ran & AK_RAN_DERIVED) {
+    }
+    if (upto == AK_GROUP_DERIVED && outputs->derived_stale && status != AK_EVAL_FAILED) {
+        ak_model_compute_derived(&instance->data);
+        outputs->derived_stale = false;
+        if (ak_log_on(instance, AK_LOG_CALLS)) {
             ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "derived outputs evaluated");
         }
     }

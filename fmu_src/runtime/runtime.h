@@ -1,46 +1,35 @@
-/* What the runtime does for an FMI layer, FMI-independent: each function does what the standards
- * share and returns an ak_status, which the layer maps to its status type. A function given the
- * calling FMI function's table entry (`call`) checks the call first (ak_call_allowed) and names the
- * function in its messages; one given only its name (`function`) is called by the layer after the
- * layer's own checks. Every function checks all of its arguments before it changes anything: a
- * refused call changes nothing.
+/* What the runtime does for an FMI layer, FMI-independent; the layer maps the ak_status. A function
+ * given the FMI function's table entry (`call`) checks the call first; one given only its name
+ * (`function`) is called after the layer's own checks. A refused call changes nothing.
  *
- * The runtime's files call one way, each only those before it: outputs.c, state_image.c <
- * instance.c (the instance, logging, the call and argument checks, the evaluation) < values.c <
+ * The runtime's files call one way, each only those before it: instance.c < values.c <
  * derivatives.c < stepping.c, continuous.c, fmu_states.c < lifecycle.c. */
 #ifndef ANGULAR_KINEMATICS_RUNTIME_H
 #define ANGULAR_KINEMATICS_RUNTIME_H
 
-#include <stdbool.h>
 #include <string.h>
-#include <stddef.h>
 
 #include "instance.h"
 
 /* --- values (values.c) ------------------------------------------------------------------------- */
 
-/* After the input derivatives changed: recomputes data.any_input_derivative, and marks the
- * outputs stale for a model whose outputs use them. */
+/* After the input derivatives changed: recomputes data.any_input_derivative; the outputs go stale
+ * if they use input derivatives. */
 void ak_input_derivatives_changed(ak_instance *instance);
-/* Gets and sets of Real values: vr[i] names ak_instance.elements[vr[i]] consecutive values (FMI
- * 2: one; FMI 3: an array), n_values in all (FMI 2: nvr). Each checks the call and every argument
- * first and refuses in the layer's words (ak_layer); a refused call changes nothing. A get brings
- * what it reads up to date (at most one evaluation per change); a set marks the outputs stale
- * only when a bit changed. */
+/* Real values: vr[i] names elements[vr[i]] values (FMI 2: one; FMI 3: an array's), n_values in
+ * all. A get evaluates at most once per change of inputs. */
 ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, double values[], size_t n_values);
 ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, const double values[],
                         size_t n_values);
-/* The variable of a scalar value reference, of the given type (Real or Integer), or NULL after
- * logging why not. */
+/* The variable of a scalar value reference, of the given type, or NULL after logging why not. */
 const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
                                        unsigned int vr, size_t index, ak_type type);
 /* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
 bool ak_parameter_settable(const ak_instance *instance, const char *function, size_t index,
                            const ak_variable *variable, double value);
-/* Stores a checked value, traced in logCalls; outputs go stale only when a bit changed; an
- * input's derivatives are forgotten. */
+/* Stores a checked value; the outputs go stale only when a bit changed. */
 void ak_store(ak_instance *instance, const char *function, unsigned int vr, double value);
 
 /* --- derivatives (derivatives.c) --------------------------------------------------------------- */

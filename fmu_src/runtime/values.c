@@ -1,18 +1,15 @@
 /* Gets and sets of Real values, one path for both FMI layers, and what an Integer get or set
- * shares with them. A value reference of the layer names ak_instance.elements consecutive values
- * (FMI 2: one; FMI 3: an array's); each call checks all of its arguments before it touches a
- * value, so a refused call changes nothing. A request checked once is kept (ak_kept_request), so
- * that the same request at the next communication point costs one comparison. The variables are
- * the model's: Real inputs, Real outputs, and parameters of variability fixed (Real or Integer),
- * which can be set only in Instantiated and Initialization Mode. */
+ * shares with them. A request checked once is kept (ak_kept_request), so that the same request at
+ * the next communication point costs one comparison. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "ak_bytes.h"
 #include "runtime.h"
 
-/* to[0 .. n - 1] := from[0 .. n - 1], the counts of the goals' gets (four vectors, a quaternion,
- * a vector) as constants: a few moves, not a memcpy (gcc made one of 12 a slow rep movs). */
+/* The counts of the goals' gets as constants: a few moves, not a memcpy (gcc made one of 12 a
+ * slow rep movs). */
 static AK_ALWAYS_INLINE void copy_values(double *to, const double *from, size_t n) {
     if (n == 12) {
         for (size_t k = 0; k < 12; k++) {
@@ -43,15 +40,6 @@ void ak_input_derivatives_changed(ak_instance *instance) {
     }
 }
 
-/* A set of an input forgets its derivatives: the importer restated the value at a new point
- * without a slope, so the input is held from there (docs/capabilities.md). */
-static void forget_input_derivatives(ak_instance *instance, unsigned int input_vr) {
-    for (int n = 0; n < AK_MAX_INPUT_DERIVATIVE_ORDER; n++) {
-        instance->data.input_derivatives[input_vr][n] = 0.0;
-    }
-    ak_input_derivatives_changed(instance);
-}
-
 static const char *type_name(ak_type type) {
     return type == AK_TYPE_INTEGER ? "Integer" : "Real";
 }
@@ -66,9 +54,9 @@ const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *
         return NULL;
     }
     if (variable->type != type) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s[%zu] = %u is %s, of type %s, not %s",
-               function, instance->layer->vr_name, index, vr, variable->name,
-               type_name(variable->type), type_name(type));
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s[%zu] = %u is %s, of type %s, not %s", function, instance->layer->vr_name,
+               index, vr, variable->name, type_name(variable->type), type_name(type));
         return NULL;
     }
     return variable;
@@ -88,9 +76,9 @@ bool ak_parameter_settable(const ak_instance *instance, const char *function, si
     }
     const char *why = ak_parameter_refusal(variable, value);
     if (why != NULL) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s = %.17g (%s[%zu] = %u) %s; no value set",
-               function, variable->name, value, instance->layer->vr_name, index,
-               variable->value_reference, why);
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s = %.17g (%s[%zu] = %u) %s; no value set", function, variable->name, value,
+               instance->layer->vr_name, index, variable->value_reference, why);
         return false;
     }
     return true;
@@ -108,27 +96,13 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
     }
     /* The importer restated the input at a new point without a slope: it is held from there. */
     if (instance->data.any_input_derivative && vr < (unsigned int)AK_MODEL.n_inputs) {
-        forget_input_derivatives(instance, vr);
+        double *derivatives = instance->data.input_derivatives[vr];
+        memset(derivatives, 0, sizeof instance->data.input_derivatives[vr]);
+        ak_input_derivatives_changed(instance);
     }
 }
 
-/* Whether a get of vr must bring the states up to date: one of them is a continuous state and
- * initialization has not ended (the states follow the parameters until then). */
-static bool states_follow_parameters(const ak_instance *instance, const unsigned int vr[],
-                                     size_t nvr) {
-    if ((instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) == 0) {
-        return false;
-    }
-    for (size_t i = 0; i < nvr; i++) {
-        if (ak_real_role_of(instance, vr[i]) == AK_REAL_STATE_OUTPUT) {
-            return true;
-        }
-    }
-    return false;
-}
-
-/* Logs why vr (vr_name[i]) names no Real value to get or set: the layer's words, FMI 2's by
- * default. */
+/* Logs why vr (vr_name[i]) names no Real value to get or set: the layer's words, or FMI 2's. */
 static void refuse_real(const ak_instance *instance, const char *function, size_t i,
                         unsigned int vr, bool set) {
     if (instance->layer->refuse_real != NULL) {
@@ -138,11 +112,7 @@ static void refuse_real(const ak_instance *instance, const char *function, size_
     }
 }
 
-static bool is_time(const ak_instance *instance, unsigned int vr) {
-    return instance->layer->time_vr != NULL && vr == *instance->layer->time_vr;
-}
-
-/* Whether the n values of the layer's calls (values_count_name) are those of vr[] (total). */
+/* Whether the n values of the layer's calls are the total of vr[]'s. */
 static bool count_matches(const ak_instance *instance, const char *function,
                           const unsigned int vr[], size_t nvr, size_t n, size_t total) {
     return n == total || instance->layer->count_matches == NULL ||
@@ -150,25 +120,25 @@ static bool count_matches(const ak_instance *instance, const char *function,
                                           n, total, vr, nvr);
 }
 
-/* Brings up to date what a get of these roles reads: nothing for inputs, parameters and states
- * after initialization, the main group for its outputs (and for states that still follow their
- * start parameters), both groups for a lazy output, everything for a derived one. */
-static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int roles,
-                                             const unsigned int vr[], size_t nvr) {
+/* Brings up to date what a get of these roles reads. */
+static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int roles) {
     if (roles & (1u << AK_REAL_DERIVED_OUTPUT)) {
         return ak_instance_update(instance, AK_GROUP_DERIVED);
     }
     if (roles & (1u << AK_REAL_LAZY_OUTPUT)) {
         return ak_instance_update(instance, AK_GROUP_LAZY);
     }
-    if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) || states_follow_parameters(instance, vr, nvr)) {
+    /* Until initialization ended the states follow the parameters. */
+    if ((roles & (1u << AK_REAL_MAIN_OUTPUT)) ||
+        ((roles & (1u << AK_REAL_STATE_OUTPUT)) &&
+         (instance->state & (AK_INSTANTIATED | AK_INITIALIZATION_MODE)) != 0)) {
         return ak_instance_update(instance, AK_GROUP_MAIN);
     }
     return AK_STATUS_OK;
 }
 
 /* Whether vr[] names n_values Real values a get can read (the time included); else logs why not.
- * *roles: the roles read (1 << ak_real_role each); *one_run: the values follow each other. */
+ * *one_run: the values follow each other. */
 static bool check_get(const ak_instance *instance, const char *function, const unsigned int vr[],
                       size_t nvr, size_t n_values, unsigned int *roles, bool *one_run) {
     size_t total = 0;
@@ -176,7 +146,8 @@ static bool check_get(const ak_instance *instance, const char *function, const u
     *one_run = nvr > 0;
     for (size_t i = 0; i < nvr; i++) {
         const ak_real_role role = ak_real_role_of(instance, vr[i]);
-        if ((role == AK_REAL_ABSENT || instance->elements[vr[i]] == 0) && !is_time(instance, vr[i])) {
+        const bool time = instance->layer->time_vr != NULL && vr[i] == *instance->layer->time_vr;
+        if ((role == AK_REAL_ABSENT || instance->elements[vr[i]] == 0) && !time) {
             refuse_real(instance, function, i, vr[i], false);
             return false;
         }
@@ -187,8 +158,7 @@ static bool check_get(const ak_instance *instance, const char *function, const u
     return count_matches(instance, function, vr, nvr, n_values, total);
 }
 
-/* Whether vr[] and n_values are the kept request's. No branch per value reference: with a
- * constant nvr the compiler compares them a vector at a time. */
+/* No branch per value reference: with a constant nvr the compiler compares a vector at a time. */
 static AK_ALWAYS_INLINE bool same_request(const ak_kept_request *kept, const unsigned int vr[],
                                           size_t nvr, size_t n_values) {
     if (nvr == 0 || nvr != kept->nvr || n_values != kept->n_values) {
@@ -210,11 +180,10 @@ static void keep_request(ak_kept_request *kept, const unsigned int vr[], size_t 
     }
 }
 
-/* Reads checked values, brought up to date as their roles need. */
 static AK_ALWAYS_INLINE ak_status read_values(ak_instance *instance, unsigned int roles,
                                               bool one_run, const unsigned int vr[], size_t nvr,
                                               double values[], size_t n_values) {
-    const ak_status status = update_for(instance, roles, vr, nvr);
+    const ak_status status = update_for(instance, roles);
     if (one_run) {
         copy_values(values, &instance->data.values[vr[0]], n_values);
         return status;
@@ -278,16 +247,14 @@ static bool storable(const ak_instance *instance, const char *function, size_t i
     for (unsigned int e = 0; e < instance->elements[vr]; e++) {
         const ak_variable *variable = &AK_MODEL.variables[vr + e];
         const double value = values[k + e];
-        if (!isfinite(value) && layer->elements_at != NULL) { /* its place in values[] too */
-            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                   "%s: %s = %g (%s[%zu], %s[%zu] = %u) is not finite; no value set", function,
-                   variable->name, value, layer->values_name, k + e, layer->vr_name, i, vr);
-            return false;
-        }
         if (!isfinite(value)) {
+            char place[64] = ""; /* FMI 3: its place in values[] too */
+            if (layer->elements_at != NULL) {
+                snprintf(place, sizeof place, "%s[%zu], ", layer->values_name, k + e);
+            }
             ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                   "%s: %s = %g (%s[%zu] = %u) is not finite; no value set", function,
-                   variable->name, value, layer->vr_name, i, vr);
+                   "%s: %s = %g (%s%s[%zu] = %u) is not finite; no value set", function,
+                   variable->name, value, place, layer->vr_name, i, vr);
             return false;
         }
         if (variable->causality == AK_CAUSALITY_PARAMETER &&
@@ -300,7 +267,7 @@ static bool storable(const ak_instance *instance, const char *function, size_t i
 
 /* Whether every value of a set may be stored, checked in the order the layer's messages are
  * numbered in: each value reference and its values in turn (FMI 2), or every value reference,
- * then the count, then the values (FMI 3); logs the first refusal. */
+ * then the count, then the values (FMI 3). */
 static bool check_set(const ak_instance *instance, const char *function, const unsigned int vr[],
                       size_t nvr, const double values[], size_t n_values) {
     const bool counted = instance->layer->count_matches != NULL;
@@ -312,13 +279,10 @@ static bool check_set(const ak_instance *instance, const char *function, const u
         }
         total += instance->elements[vr[i]];
     }
-    if (!counted) {
-        return true;
-    }
-    if (!count_matches(instance, function, vr, nvr, n_values, total)) {
+    if (counted && !count_matches(instance, function, vr, nvr, n_values, total)) {
         return false;
     }
-    for (size_t i = 0, k = 0; i < nvr; k += instance->elements[vr[i++]]) {
+    for (size_t i = 0, k = 0; counted && i < nvr; k += instance->elements[vr[i++]]) {
         if (!storable(instance, function, i, vr[i], values, k)) {
             return false;
         }
@@ -328,11 +292,10 @@ static bool check_set(const ak_instance *instance, const char *function, const u
 
 ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, double values[], size_t n_values) {
-    /* The get of the last step asked again, untraced (every communication point's): known good. */
+    /* The get of the last step asked again, untraced: known good. */
     if (ak_call_passes(instance, call) && vr != NULL && values != NULL) {
         const ak_kept_request *kept = &instance->kept_get;
-        /* The goals' gets (12 scalars; 4 arrays or a quaternion) with the count a constant, so
-         * that the compiler unrolls the comparison and the copy (docs/performance.md). */
+        /* The goals' counts as constants, so that the compiler unrolls (docs/performance.md). */
         if (nvr == 12 ? same_request(kept, vr, 12, n_values)
             : nvr == 4 ? same_request(kept, vr, 4, n_values)
                        : same_request(kept, vr, nvr, n_values)) {
@@ -343,8 +306,7 @@ ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
 }
 
 /* Stores n finite values of consecutive inputs from first, or nothing (false) if one is not
- * finite; marks the outputs stale when a bit changed. The counts of the goals' sets (a vector,
- * every input) as constants, so that the compiler unrolls them (docs/performance.md). */
+ * finite. The goals' counts as constants, so that the compiler unrolls (docs/performance.md). */
 static AK_ALWAYS_INLINE bool store_inputs(ak_instance *instance, unsigned int first,
                                           const double values[], size_t n) {
     double *target = &instance->data.values[first];
@@ -381,10 +343,9 @@ static AK_NOINLINE ak_status set_checked(ak_instance *instance, const ak_functio
 ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, const double values[],
                         size_t n_values) {
-    /* The set of the last step's inputs again (one run), untraced, no input derivative to
-     * forget: only the values need a check, done as they are stored; if one is not finite, the
-     * full check names it. One input array (FMI 3's usual set) is checked by one look-up. FMI 2's
-     * count of every input a constant, as in ak_get_values. */
+    /* The set of the last step's inputs again, or of one input array, untraced, no input
+     * derivative to forget: only the values need a check, done as they are stored; if one is not
+     * finite, the full check names it. */
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
     if (ak_call_passes(instance, call) && vr != NULL && values != NULL &&
         !instance->data.any_input_derivative &&
