@@ -1,25 +1,45 @@
-/* FMI 2.0 derivatives: output derivatives (maxOutputDerivativeOrder = 1) and directional
- * derivatives (providesDirectionalDerivative), over runtime/derivatives.c. A model without one of
- * them gets the function refused with a message naming the capability flag, which its
+/* FMI 2.0 derivatives over runtime/derivatives.c and runtime/stepping.c: input, output and
+ * directional derivatives. A model without one is refused naming the capability flag that its
  * modelDescription.xml sets to false / 0. */
 #include <math.h>
 
 #include "fmi2_layer.h"
 
-/* The highest order fmi2GetRealOutputDerivatives gives: maxOutputDerivativeOrder. */
 enum { MAX_OUTPUT_DERIVATIVE_ORDER = 1 };
+
+/* The state check, then the capability flag the model must claim. */
+static bool offered(ak_instance *instance, ak_fmi2_function function, bool provided,
+                    const char *flag) {
+    if (!fmi2_allowed(instance, function)) {
+        return false;
+    }
+    if (!provided) {
+        (void)ak_not_provided(instance, fmi2_name(function), flag);
+    }
+    return provided;
+}
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                       const fmi2Integer order[], const fmi2Real value[]) {
+    ak_instance *instance = c;
+    const char *self = fmi2_name(AK_FMI2_SET_REAL_INPUT_DERIVATIVES);
+    if (!offered(instance, AK_FMI2_SET_REAL_INPUT_DERIVATIVES, AK_MODEL.can_interpolate_inputs,
+                 "canInterpolateInputs=\"false\"") ||
+        !ak_given(instance, self, nvr, "nvr", vr, "vr") ||
+        !ak_given(instance, self, nvr, "nvr", order, "order") ||
+        !ak_given(instance, self, nvr, "nvr", value, "value")) {
+        return fmi2Error;
+    }
+    return fmi2_status(ak_set_input_derivatives(instance, self, vr, nvr, order, value));
+}
 
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                         const fmi2Integer order[], fmi2Real value[]) {
     ak_instance *instance = c;
     const char *self = fmi2_name(AK_FMI2_GET_REAL_OUTPUT_DERIVATIVES);
-    if (!fmi2_allowed(instance, AK_FMI2_GET_REAL_OUTPUT_DERIVATIVES)) {
-        return fmi2Error;
-    }
-    if (AK_MODEL.output_derivatives == NULL) {
-        return fmi2_status(ak_not_provided(instance, self, "maxOutputDerivativeOrder=\"0\""));
-    }
-    if (!ak_given(instance, self, nvr, "nvr", vr, "vr") ||
+    if (!offered(instance, AK_FMI2_GET_REAL_OUTPUT_DERIVATIVES,
+                 AK_MODEL.output_derivatives != NULL, "maxOutputDerivativeOrder=\"0\"") ||
+        !ak_given(instance, self, nvr, "nvr", vr, "vr") ||
         !ak_given(instance, self, nvr, "nvr", order, "order") ||
         !ak_given(instance, self, nvr, "nvr", value, "value")) {
         return fmi2Error;
@@ -46,14 +66,9 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
                                         fmi2Real dvUnknown[]) {
     ak_instance *instance = c;
     const char *self = fmi2_name(AK_FMI2_GET_DIRECTIONAL_DERIVATIVE);
-    if (!fmi2_allowed(instance, AK_FMI2_GET_DIRECTIONAL_DERIVATIVE)) {
-        return fmi2Error;
-    }
-    if (AK_MODEL.jacobian == NULL) {
-        return fmi2_status(
-            ak_not_provided(instance, self, "providesDirectionalDerivative=\"false\""));
-    }
-    if (!ak_given(instance, self, nUnknown, "nUnknown", vUnknown_ref, "vUnknown_ref") ||
+    if (!offered(instance, AK_FMI2_GET_DIRECTIONAL_DERIVATIVE, AK_MODEL.jacobian != NULL,
+                 "providesDirectionalDerivative=\"false\"") ||
+        !ak_given(instance, self, nUnknown, "nUnknown", vUnknown_ref, "vUnknown_ref") ||
         !ak_given(instance, self, nUnknown, "nUnknown", dvUnknown, "dvUnknown") ||
         !ak_given(instance, self, nKnown, "nKnown", vKnown_ref, "vKnown_ref") ||
         !ak_given(instance, self, nKnown, "nKnown", dvKnown, "dvKnown")) {
@@ -77,8 +92,6 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
             return fmi2Error;
         }
     }
-    const ak_status status =
-        ak_derivative(instance, vUnknown_ref, nUnknown, vKnown_ref, nKnown, dvKnown, dvUnknown,
-                      false);
-    return status == AK_STATUS_DISCARD ? fmi2Discard : fmi2OK;
+    return fmi2_status(ak_derivative(instance, vUnknown_ref, nUnknown, vKnown_ref, nKnown, dvKnown,
+                                     dvUnknown, false));
 }

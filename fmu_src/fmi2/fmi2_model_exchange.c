@@ -1,6 +1,5 @@
-/* FMI 2.0 model exchange over the runtime's continuous-state functions (runtime/continuous.c).
- * No model has event indicators: no event ever happens, and the event functions only move the
- * state machine and check their arguments. */
+/* FMI 2.0 model exchange over runtime/continuous.c. No model has event indicators: the event
+ * functions only move the state machine and check their arguments. */
 #include "fmi2_layer.h"
 
 fmi2Status fmi2EnterEventMode(fmi2Component c) {
@@ -28,7 +27,8 @@ fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {
                                       AK_CONTINUOUS_TIME_MODE));
 }
 
-fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStatePriorToCurrentPoint,
+fmi2Status fmi2CompletedIntegratorStep(fmi2Component c,
+                                       fmi2Boolean noSetFMUStatePriorToCurrentPoint,
                                        fmi2Boolean *enterEventMode,
                                        fmi2Boolean *terminateSimulation) {
     (void)noSetFMUStatePriorToCurrentPoint; /* an FMU state is a copy: nothing to release */

@@ -1,8 +1,6 @@
-/* The allowed-state table of the FMI 2.0 state machines: co-simulation (FMI 2.0.4, section
- * 4.2.4) and model exchange (section 3.2.3). An instance lives in one of the two machines, chosen
- * by fmi2Instantiate's fmuType; the functions of the other interface are refused. StepInProgress
- * and StepCanceled belong to asynchronous stepping, which this FMU does not offer; they appear in
- * the masks to keep the table the standard's. */
+/* The allowed states of the FMI 2.0 functions: co-simulation (FMI 2.0.4, section 4.2.4) and model
+ * exchange (3.2.3). StepInProgress and StepCanceled (asynchronous steps, which this FMU does not
+ * offer) stay in the masks to keep the table the standard's. */
 #include "fmi2_layer.h"
 
 enum {

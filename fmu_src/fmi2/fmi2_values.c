@@ -1,5 +1,4 @@
-/* FMI 2.0 getters and setters: the runtime's (runtime/values.c), one value per value reference;
- * the models have no Boolean and no String variables. */
+/* FMI 2.0 getters and setters over runtime/values.c; no model has Boolean or String variables. */
 #include "fmi2_layer.h"
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -38,7 +37,8 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; i++) {
-        const ak_variable *variable = ak_variable_of_type(instance, self, vr[i], i, AK_TYPE_INTEGER);
+        const ak_variable *variable =
+            ak_variable_of_type(instance, self, vr[i], i, AK_TYPE_INTEGER);
         if (variable == NULL || !ak_parameter_settable(instance, self, i, variable, value[i])) {
             return fmi2Error;
         }

@@ -1,5 +1,4 @@
-/* The life cycle both FMI versions share: the debug-logging switch, the experiment, the end of
- * initialization (runtime/runtime.h). */
+/* The life cycle of both FMI versions: debug logging, the experiment, initialization, reset. */
 #include <math.h>
 #include <string.h>
 
@@ -36,8 +35,7 @@ ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *ca
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
-    if (!ak_given(instance, function, n, "nCategories", categories, "categories")) {
+    if (!ak_given(instance, call->name, n, "nCategories", categories, "categories")) {
         return AK_STATUS_ERROR;
     }
     ak_log_category found;
@@ -46,7 +44,7 @@ ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *ca
             ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                    "%s: categories[%zu] = \"%s\" is not a log category of this FMU "
                    "(" AK_LOG_CATEGORY_LIST ")",
-                   function, i, categories[i] ? categories[i] : "(null)");
+                   call->name, i, categories[i] ? categories[i] : "(null)");
             return AK_STATUS_ERROR;
         }
     }
@@ -67,25 +65,23 @@ ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *cal
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
     if (tolerance_defined && !(isfinite(tolerance) && tolerance >= 0.0)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: tolerance = %g must be finite and >= 0", function, tolerance);
+               "%s: tolerance = %g must be finite and >= 0", call->name, tolerance);
         return AK_STATUS_ERROR;
     }
     if (!isfinite(start_time)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: startTime = %g is not finite",
-               function, start_time);
+               call->name, start_time);
         return AK_STATUS_ERROR;
     }
     if (stop_time_defined && !(isfinite(stop_time) && stop_time >= start_time)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: stopTime = %.17g must be finite and >= startTime = %.17g", function,
+               "%s: stopTime = %.17g must be finite and >= startTime = %.17g", call->name,
                stop_time, start_time);
         return AK_STATUS_ERROR;
     }
-    /* No model integrates with an error control (co-simulation steps are closed-form, model
-     * exchange is the importer's): the tolerance has nothing to control. */
+    /* No model integrates with an error control: the tolerance has nothing to control. */
     instance->time = start_time;
     instance->stop_time_defined = stop_time_defined;
     instance->stop_time = stop_time;
@@ -97,13 +93,12 @@ ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_r
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
     if (AK_MODEL.initialize != NULL) {
         if (AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
             ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                    "%s: the parameters give no initial state (see the message before); the "
                    "instance stays in %s",
-                   function, ak_state_name(instance, AK_INITIALIZATION_MODE));
+                   call->name, ak_state_name(instance, AK_INITIALIZATION_MODE));
             return AK_STATUS_ERROR;
         }
         ak_instance_inputs_changed(instance);
