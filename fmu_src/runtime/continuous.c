@@ -5,6 +5,17 @@
 
 #include "runtime.h"
 
+/* A count that must be 0: logged; false. */
+static bool refuse_count(const ak_instance *instance, const char *function, const char *count_name,
+                         size_t n) {
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+           "%s: %s = %zu, but this FMU has %s (%s must be 0)", function, count_name, n,
+           AK_MODEL.n_states == 0 ? "no continuous states and no event indicators"
+                                  : "no event indicators",
+           count_name);
+    return false;
+}
+
 /* The call check, then an array of states, derivatives or nominals: one per state, given if any. */
 static bool state_array(ak_instance *instance, const ak_function_rule *call,
                         const char *count_name, const char *array_name, const void *array,
@@ -13,11 +24,7 @@ static bool state_array(ak_instance *instance, const ak_function_rule *call,
         return false;
     }
     if (AK_MODEL.n_states == 0 && nx != 0) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: %s = %zu, but this FMU has no continuous states and no event indicators (%s "
-               "must be 0)",
-               call->name, count_name, nx, count_name);
-        return false;
+        return refuse_count(instance, call->name, count_name, nx);
     }
     if (nx != (size_t)AK_MODEL.n_states) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
@@ -28,27 +35,30 @@ static bool state_array(ak_instance *instance, const ak_function_rule *call,
     return ak_given(instance, call->name, nx, count_name, array, array_name);
 }
 
-/* The states, or their derivatives, into out. In Initialization Mode the states follow the
- * parameters: brought up to date first (DISCARD, the model logged why, when they give none). */
+typedef enum { STATES, DERIVATIVES, NOMINALS } state_array_kind;
+
+/* The states, their derivatives or their nominals into out. In Initialization Mode the states
+ * follow the parameters: brought up to date first (DISCARD, the model logged why, when the
+ * parameters give none). */
 static ak_status get_states(ak_instance *instance, const ak_function_rule *call,
                             const char *count_name, const char *array_name, double out[],
-                            size_t nx, bool derivatives) {
+                            size_t nx, state_array_kind kind) {
     if (!state_array(instance, call, count_name, array_name, out, nx)) {
         return AK_STATUS_ERROR;
     }
     if (nx == 0) {
         return AK_STATUS_OK;
     }
-    if ((instance->state & AK_INITIALIZATION_MODE) != 0 &&
+    if (kind != NOMINALS && (instance->state & AK_INITIALIZATION_MODE) != 0 &&
         ak_instance_update(instance, AK_GROUP_MAIN) == AK_STATUS_DISCARD) {
         return AK_STATUS_DISCARD;
     }
-    if (derivatives) {
+    if (kind == DERIVATIVES) {
         AK_MODEL.derivatives(&instance->data); /* cheap, and exact for the current states */
     }
-    const unsigned int *vrs = derivatives ? AK_MODEL.derivative_vrs : AK_MODEL.state_vrs;
+    const unsigned int *vrs = kind == DERIVATIVES ? AK_MODEL.derivative_vrs : AK_MODEL.state_vrs;
     for (size_t k = 0; k < nx; k++) {
-        out[k] = instance->data.values[vrs[k]];
+        out[k] = kind == NOMINALS ? AK_MODEL.state_nominals[k] : instance->data.values[vrs[k]];
     }
     return AK_STATUS_OK;
 }
@@ -56,25 +66,19 @@ static ak_status get_states(ak_instance *instance, const ak_function_rule *call,
 ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name, double x[],
                                    size_t nx) {
-    return get_states(instance, call, count_name, array_name, x, nx, false);
+    return get_states(instance, call, count_name, array_name, x, nx, STATES);
 }
 
 ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name,
                                    double derivatives[], size_t nx) {
-    return get_states(instance, call, count_name, array_name, derivatives, nx, true);
+    return get_states(instance, call, count_name, array_name, derivatives, nx, DERIVATIVES);
 }
 
 ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
                           const char *count_name, const char *array_name, double nominals[],
                           size_t nx) {
-    if (!state_array(instance, call, count_name, array_name, nominals, nx)) {
-        return AK_STATUS_ERROR;
-    }
-    for (size_t k = 0; k < nx; k++) {
-        nominals[k] = AK_MODEL.state_nominals[k];
-    }
-    return AK_STATUS_OK;
+    return get_states(instance, call, count_name, array_name, nominals, nx, NOMINALS);
 }
 
 ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule *call,
@@ -122,13 +126,6 @@ ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    if (n != 0) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: %s = %zu, but this FMU has %s (%s must be 0)", call->name, count_name, n,
-               AK_MODEL.n_states == 0 ? "no continuous states and no event indicators"
-                                      : "no event indicators",
-               count_name);
-        return AK_STATUS_ERROR;
-    }
-    return AK_STATUS_OK;
+    return n == 0 || refuse_count(instance, call->name, count_name, n) ? AK_STATUS_OK
+                                                                       : AK_STATUS_ERROR;
 }

@@ -4,16 +4,6 @@
 
 #include "runtime.h"
 
-static bool find_category(const char *name, ak_log_category *category) {
-    for (int c = 0; c < AK_N_LOG_CATEGORIES; c++) {
-        if (strcmp(name, AK_LOG_CATEGORY_NAMES[c]) == 0) {
-            *category = (ak_log_category)c;
-            return true;
-        }
-    }
-    return false;
-}
-
 ak_status ak_enter_state(ak_instance *instance, const ak_function_rule *call, ak_state state) {
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
@@ -38,23 +28,27 @@ ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *ca
     if (!ak_given(instance, call->name, n, "nCategories", categories, "categories")) {
         return AK_STATUS_ERROR;
     }
-    ak_log_category found;
+    bool named[AK_N_LOG_CATEGORIES] = {false};
     for (size_t i = 0; i < n; i++) { /* every name checked before anything changes */
-        if (categories[i] == NULL || !find_category(categories[i], &found)) {
+        int c = 0;
+        while (c < AK_N_LOG_CATEGORIES &&
+               (categories[i] == NULL || strcmp(categories[i], AK_LOG_CATEGORY_NAMES[c]) != 0)) {
+            c++;
+        }
+        if (c == AK_N_LOG_CATEGORIES) {
             ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                    "%s: categories[%zu] = \"%s\" is not a log category of this FMU "
                    "(" AK_LOG_CATEGORY_LIST ")",
                    call->name, i, categories[i] ? categories[i] : "(null)");
             return AK_STATUS_ERROR;
         }
+        named[c] = true;
     }
     on = on && instance->has_logger; /* nothing reaches an importer that gave no logger */
-    for (int category = 0; n == 0 && category < AK_N_LOG_CATEGORIES; category++) {
-        instance->log_enabled[category] = on;
-    }
-    for (size_t i = 0; i < n; i++) {
-        find_category(categories[i], &found);
-        instance->log_enabled[found] = on;
+    for (int c = 0; c < AK_N_LOG_CATEGORIES; c++) {
+        if (n == 0 || named[c]) {
+            instance->log_enabled[c] = on;
+        }
     }
     return AK_STATUS_OK;
 }

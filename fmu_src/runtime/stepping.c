@@ -97,11 +97,8 @@ static ak_status step_evaluating(ak_instance *instance, const char *function, do
         stepped = AK_MODEL.step(&instance->data, h); /* failing, it changed nothing */
         ak_instance_inputs_changed(instance);
     }
-    if (stepped != AK_EVAL_FAILED && instance->data.any_input_derivative &&
-        !advance_inputs(instance, function, h)) {
-        if (moves) {
-            memcpy(instance->data.values, saved_values, n_values); /* the states moved */
-        }
+    if (stepped != AK_EVAL_FAILED && any_derivative && !advance_inputs(instance, function, h)) {
+        memcpy(instance->data.values, saved_values, n_values); /* the states moved */
         return AK_STATUS_ERROR;
     }
     const ak_status status = stepped == AK_EVAL_FAILED  ? AK_STATUS_DISCARD
@@ -122,6 +119,11 @@ static ak_status step_evaluating(ak_instance *instance, const char *function, do
                stepped == AK_EVAL_FAILED ? "states cannot be advanced over it"
                                          : "outputs cannot be evaluated at its end",
                instance->time);
+        return AK_STATUS_DISCARD;
+    }
+    instance->time = t + h;
+    if (ak_log_on(instance, AK_LOG_CALLS)) {
+        ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: from %.17g to %.17g", function, t, t + h);
     }
     return status;
 }
@@ -130,20 +132,18 @@ ak_status ak_do_step(ak_instance *instance, const char *function, double t, doub
     if (!step_arguments_valid(instance, function, t, h)) {
         return AK_STATUS_ERROR;
     }
-    ak_status status = AK_STATUS_OK;
     if (AK_MODEL.evaluate_in_step || AK_MODEL.step != NULL) {
-        status = step_evaluating(instance, function, t, h);
-    } else if (instance->data.any_input_derivative && !advance_inputs(instance, function, h)) {
-        return AK_STATUS_ERROR; /* without derivatives the inputs are held: no call */
+        return step_evaluating(instance, function, t, h);
     }
-    if (status == AK_STATUS_DISCARD || status == AK_STATUS_ERROR) {
-        return status;
+    /* Without input derivatives the inputs are held: no call. */
+    if (instance->data.any_input_derivative && !advance_inputs(instance, function, h)) {
+        return AK_STATUS_ERROR;
     }
     if (ak_log_on(instance, AK_LOG_CALLS)) {
         ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: from %.17g to %.17g", function, t, t + h);
     }
     instance->time = t + h;
-    return status;
+    return AK_STATUS_OK;
 }
 
 ak_status ak_set_input_derivatives(ak_instance *instance, const char *function,
