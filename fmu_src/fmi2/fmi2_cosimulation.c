@@ -5,11 +5,10 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize,
                       fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
     (void)noSetFMUStatePriorToCurrentPoint; /* an FMU state is a copy: nothing to release */
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_DO_STEP)) {
+    if (!fmi2_allowed(c, AK_FMI2_DO_STEP)) {
         return fmi2Error;
     }
-    return fmi2_status(ak_do_step(instance, fmi2_name(AK_FMI2_DO_STEP), currentCommunicationPoint,
+    return fmi2_status(ak_do_step(c, fmi2_name(AK_FMI2_DO_STEP), currentCommunicationPoint,
                                   communicationStepSize));
 }
 

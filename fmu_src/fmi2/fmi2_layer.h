@@ -3,8 +3,6 @@
 #ifndef ANGULAR_KINEMATICS_FMI2_LAYER_H
 #define ANGULAR_KINEMATICS_FMI2_LAYER_H
 
-#include <stdbool.h>
-
 #include "fmi2Functions.h"
 #include "runtime.h"
 

@@ -1,6 +1,5 @@
 /* FMI 2.0 life cycle: what the layer tells the runtime of itself (FMI2_LAYER), instantiation,
  * initialization, termination, reset, freeing, debug logging and the FMU states. */
-#include <stdio.h>
 #include <string.h>
 
 #include "fmi2_layer.h"

@@ -1,6 +1,5 @@
-/* Model exchange for both FMI versions. The continuous states (ak_model.n_states, 0 for the
- * algebraic models) are values at ak_model.state_vrs; their derivatives come from
- * ak_model.derivatives. No model has event indicators, so no event ever happens. */
+/* Model exchange for both FMI versions: the continuous states are values at ak_model.state_vrs;
+ * no model has event indicators, so no event ever happens. */
 #include <math.h>
 
 #include "runtime.h"
@@ -38,8 +37,7 @@ static bool state_array(ak_instance *instance, const ak_function_rule *call,
 typedef enum { STATES, DERIVATIVES, NOMINALS } state_array_kind;
 
 /* The states, their derivatives or their nominals into out. In Initialization Mode the states
- * follow the parameters: brought up to date first (DISCARD, the model logged why, when the
- * parameters give none). */
+ * follow the parameters: brought up to date first (DISCARD when the parameters give none). */
 static ak_status get_states(ak_instance *instance, const ak_function_rule *call,
                             const char *count_name, const char *array_name, double out[],
                             size_t nx, state_array_kind kind) {

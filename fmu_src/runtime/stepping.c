@@ -1,6 +1,5 @@
-/* Co-simulation for both FMI versions: a step advances the model's states (ak_model.step, with
- * the inputs at the step start), then moves the time and the inputs: held, or (FMI 2 only) along
- * the polynomials of their derivatives. */
+/* Co-simulation for both FMI versions: a step advances the model's states, then moves the time
+ * and the inputs: held, or (FMI 2 only) along the polynomials of their derivatives. */
 #include <math.h>
 #include <string.h>
 
