@@ -49,7 +49,6 @@ static const ak_layer FMI2_LAYER = {
     .state_setter_note = " and a continuous state (fmi2SetContinuousStates sets states in model "
                          "exchange)",
     .step_discarded_state = AK_STEP_FAILED,
-    /* Version 2: version 1 held the 21 values of the 1-2-3-only FMU. */
     .state_format = {"AKinFMUs", 2u, "FMU state", "GUID", "fmuType", "FMUstate",
                      "fmi2GetFMUstate", "fmi2DeSerializeFMUstate", "fmi2SerializedFMUstateSize",
                      true},

@@ -3,8 +3,9 @@
 #include "runtime.h"
 
 ak_status ak_not_provided(const ak_instance *instance, const char *function, const char *flag) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: not provided by %s (modelDescription.xml: %s)",
-           function, AK_MODEL.model_identifier, flag);
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+           "%s: not provided by %s (modelDescription.xml: %s)", function,
+           AK_MODEL.model_identifier, flag);
     return AK_STATUS_ERROR;
 }
 
@@ -22,8 +23,9 @@ bool ak_derivative_variable(const ak_instance *instance, const char *function,
         return false;
     }
     if (variable->causality != causality) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
-               function, list_name, index, vr, variable->name,
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s[%zu] = %u is %s, %s %s; expected an %s", function, list_name, index, vr,
+               variable->name,
                variable->causality == AK_CAUSALITY_PARAMETER ? "a" : "an",
                ak_causality_name(variable->causality), ak_causality_name(causality));
         return false;

@@ -100,9 +100,10 @@ static ak_status step_evaluating(ak_instance *instance, const char *function, do
         memcpy(instance->data.values, saved_values, n_values); /* the states moved */
         return AK_STATUS_ERROR;
     }
-    const ak_status status = stepped == AK_EVAL_FAILED  ? AK_STATUS_DISCARD
-                             : AK_MODEL.evaluate_in_step ? ak_instance_update(instance, AK_GROUP_MAIN)
-                                                         : AK_STATUS_OK;
+    const ak_status status =
+        stepped == AK_EVAL_FAILED   ? AK_STATUS_DISCARD
+        : AK_MODEL.evaluate_in_step ? ak_instance_update(instance, AK_GROUP_MAIN)
+                                    : AK_STATUS_OK;
     if (status == AK_STATUS_DISCARD) {
         if (moves) {
             memcpy(instance->data.values, saved_values, n_values);
