@@ -47,14 +47,11 @@ set(AK_MODEL_COMMON_SOURCES
   fmu_src/models/model_log.c
   fmu_src/models/model_derived.c)
 set(AK_FMI2_SOURCES
-  fmu_src/fmi2/fmi2_layer.c
   fmu_src/fmi2/fmi2_state_machine.c
   fmu_src/fmi2/fmi2_lifecycle.c
   fmu_src/fmi2/fmi2_values.c
   fmu_src/fmi2/fmi2_cosimulation.c
-  fmu_src/fmi2/fmi2_model_exchange.c
-  fmu_src/fmi2/fmi2_derivatives.c
-  fmu_src/fmi2/fmi2_fmu_state.c)
+  fmu_src/fmi2/fmi2_model_exchange.c)
 set(AK_FMI2_HEADERS
   fmu_src/fmi2/fmi2_layer.h
   fmu_src/runtime/runtime.h

@@ -1,11 +1,7 @@
-/* The FMI 2.0 layer: the FMI 2 entry points over the runtime (runtime/runtime.h). It knows no
- * model, only the descriptor AK_MODEL; what it adds to the runtime is what the standard makes
- * its own: the signatures, fmi2Status, the state table (fmi2_state_machine.c), the master's
- * callbacks and the co-simulation status functions. */
+/* The FMI 2.0 layer over the runtime (runtime/runtime.h): the signatures, fmi2Status, the state
+ * table (fmi2_state_machine.c), the master's callbacks and the co-simulation status functions. */
 #ifndef ANGULAR_KINEMATICS_FMI2_LAYER_H
 #define ANGULAR_KINEMATICS_FMI2_LAYER_H
-
-#include <stdbool.h>
 
 #include "fmi2Functions.h"
 #include "runtime.h"
@@ -57,22 +53,14 @@ typedef enum {
 
 /* The allowed states and interfaces of every FMI 2 function (fmi2_state_machine.c). */
 extern const ak_function_rule FMI2_RULES[AK_N_FMI2_FUNCTIONS];
-/* What the layer tells the runtime of itself (fmi2_layer.c). */
-extern const ak_layer FMI2_LAYER;
 
-/* An FMI 2 instance: the runtime's, and a copy of the master's callbacks (the master's struct
- * need not outlive fmi2Instantiate). */
+/* The runtime's instance and a copy of the master's callbacks, which need not outlive
+ * fmi2Instantiate. */
 typedef struct {
     ak_instance base; /* first: an fmi2Component is also an ak_instance */
     fmi2CallbackFunctions functions;
 } fmi2_instance;
 
-/* Sends a formatted message through the master's logger (there is one), every '%' doubled:
- * FMI 2.0 lets the master treat the message as a printf format. */
-void fmi2_send(const fmi2CallbackFunctions *functions, const char *instance_name,
-               fmi2Status status, ak_log_category category, const char *message);
-
-/* The state check at the top of every entry point (runtime/instance.h). */
 static inline bool fmi2_allowed(const ak_instance *instance, ak_fmi2_function function) {
     return ak_call_allowed(instance, &FMI2_RULES[function]);
 }
@@ -81,7 +69,6 @@ static inline const char *fmi2_name(ak_fmi2_function function) {
     return FMI2_RULES[function].name;
 }
 
-/* ak_status and fmi2Status number OK, Warning, Discard and Error alike. */
 _Static_assert((int)AK_STATUS_ERROR == (int)fmi2Error && (int)AK_STATUS_DISCARD == (int)fmi2Discard,
                "ak_status follows fmi2Status");
 static inline fmi2Status fmi2_status(ak_status status) {

@@ -1,6 +1,5 @@
-/* FMI 2.0 model exchange over the runtime's continuous-state functions (runtime/continuous.c).
- * No model has event indicators: no event ever happens, and the event functions only move the
- * state machine and check their arguments. */
+/* FMI 2.0 model exchange over runtime/continuous.c. No model has event indicators: the event
+ * functions only move the state machine and check their arguments. */
 #include "fmi2_layer.h"
 
 fmi2Status fmi2EnterEventMode(fmi2Component c) {
@@ -8,18 +7,13 @@ fmi2Status fmi2EnterEventMode(fmi2Component c) {
 }
 
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo) {
-    ak_instance *instance = c;
-    if (!fmi2_allowed(instance, AK_FMI2_NEW_DISCRETE_STATES) ||
-        !ak_not_null(instance, fmi2_name(AK_FMI2_NEW_DISCRETE_STATES), eventInfo, "eventInfo")) {
+    if (!fmi2_allowed(c, AK_FMI2_NEW_DISCRETE_STATES) ||
+        !ak_not_null(c, fmi2_name(AK_FMI2_NEW_DISCRETE_STATES), eventInfo, "eventInfo")) {
         return fmi2Error;
     }
-    /* No discrete states, no time events, nothing that could ask for another iteration. */
-    eventInfo->newDiscreteStatesNeeded = fmi2False;
-    eventInfo->terminateSimulation = fmi2False;
-    eventInfo->nominalsOfContinuousStatesChanged = fmi2False;
-    eventInfo->valuesOfContinuousStatesChanged = fmi2False;
-    eventInfo->nextEventTimeDefined = fmi2False;
-    eventInfo->nextEventTime = 0.0;
+    /* No discrete states, no time events, nothing that could ask for another iteration: every
+     * field false, nextEventTime 0. */
+    *eventInfo = (fmi2EventInfo){0};
     return fmi2OK;
 }
 
@@ -28,15 +22,15 @@ fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {
                                       AK_CONTINUOUS_TIME_MODE));
 }
 
-fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStatePriorToCurrentPoint,
+fmi2Status fmi2CompletedIntegratorStep(fmi2Component c,
+                                       fmi2Boolean noSetFMUStatePriorToCurrentPoint,
                                        fmi2Boolean *enterEventMode,
                                        fmi2Boolean *terminateSimulation) {
     (void)noSetFMUStatePriorToCurrentPoint; /* an FMU state is a copy: nothing to release */
-    ak_instance *instance = c;
     const char *self = fmi2_name(AK_FMI2_COMPLETED_INTEGRATOR_STEP);
-    if (!fmi2_allowed(instance, AK_FMI2_COMPLETED_INTEGRATOR_STEP) ||
-        !ak_not_null(instance, self, enterEventMode, "enterEventMode") ||
-        !ak_not_null(instance, self, terminateSimulation, "terminateSimulation")) {
+    if (!fmi2_allowed(c, AK_FMI2_COMPLETED_INTEGRATOR_STEP) ||
+        !ak_not_null(c, self, enterEventMode, "enterEventMode") ||
+        !ak_not_null(c, self, terminateSimulation, "terminateSimulation")) {
         return fmi2Error;
     }
     *enterEventMode = fmi2False;

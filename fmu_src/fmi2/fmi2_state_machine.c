@@ -1,8 +1,6 @@
-/* The allowed-state table of the FMI 2.0 state machines: co-simulation (FMI 2.0.4, section
- * 4.2.4) and model exchange (section 3.2.3). An instance lives in one of the two machines, chosen
- * by fmi2Instantiate's fmuType; the functions of the other interface are refused. StepInProgress
- * and StepCanceled belong to asynchronous stepping, which this FMU does not offer; they appear in
- * the masks to keep the table the standard's. */
+/* The allowed states of the FMI 2.0 functions: co-simulation (FMI 2.0.4, section 4.2.4) and model
+ * exchange (3.2.3). StepInProgress and StepCanceled (asynchronous steps, which this FMU does not
+ * offer) stay in the masks to keep the table the standard's. */
 #include "fmi2_layer.h"
 
 enum {
@@ -17,17 +15,13 @@ enum {
     CONTINUOUS_TIME_MODE = AK_CONTINUOUS_TIME_MODE,
     ANY_STATE = INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE | STEP_IN_PROGRESS |
                 STEP_FAILED | STEP_CANCELED | TERMINATED | EVENT_MODE | CONTINUOUS_TIME_MODE,
-    /* Where the values of the variables can be read. */
     READABLE = INITIALIZATION_MODE | STEP_COMPLETE | STEP_FAILED | STEP_CANCELED | TERMINATED |
                EVENT_MODE | CONTINUOUS_TIME_MODE,
-    /* Where inputs can be set (in ContinuousTimeMode only continuous inputs, which all are). */
+    /* In ContinuousTimeMode only continuous inputs, which all are. */
     WRITABLE = INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE | EVENT_MODE |
                CONTINUOUS_TIME_MODE,
-    /* Where the simulation status can be asked. */
     STATUS = STEP_COMPLETE | STEP_IN_PROGRESS | STEP_FAILED | STEP_CANCELED | TERMINATED,
-    /* Where the FMU state can be got, set or serialized. */
     FMU_STATE = ANY_STATE & ~STEP_IN_PROGRESS,
-    /* Where model exchange's event indicators and continuous states can be read. */
     ME_READABLE = INITIALIZATION_MODE | EVENT_MODE | CONTINUOUS_TIME_MODE | TERMINATED
 };
 

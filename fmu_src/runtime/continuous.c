@@ -1,86 +1,95 @@
-/* Model exchange, for both FMI versions. The model's continuous states (ak_model.n_states, 0 for
- * the algebraic models) are values like every other, at the value references ak_model.state_vrs;
- * their derivatives come from ak_model.derivatives. No model has event indicators: no event ever
- * happens, and the event functions only move the time and check their arguments. */
+/* Model exchange for both FMI versions: the continuous states are values at ak_model.state_vrs;
+ * no model has event indicators, so no event ever happens. */
 #include <math.h>
 
 #include "runtime.h"
 
-/* In Initialization Mode the states follow the parameters: brings them up to date; false (the
- * model logged why) when the parameters give none. */
-static bool states_current(ak_instance *instance, size_t nx) {
-    return nx == 0 || (instance->state & AK_INITIALIZATION_MODE) == 0 ||
-           ak_instance_update(instance, AK_GROUP_MAIN) != AK_STATUS_DISCARD;
+/* A count that must be 0: logged; false. */
+static bool refuse_count(const ak_instance *instance, const char *function, const char *count_name,
+                         size_t n) {
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+           "%s: %s = %zu, but this FMU has %s (%s must be 0)", function, count_name, n,
+           AK_MODEL.n_states == 0 ? "no continuous states and no event indicators"
+                                  : "no event indicators",
+           count_name);
+    return false;
 }
 
-/* An array of states, derivatives or nominals: as many as the model has states, given if any. */
-static bool state_array(const ak_instance *instance, const char *function, const char *count_name,
-                        const char *array_name, const void *array, size_t nx) {
-    if (AK_MODEL.n_states == 0 && nx != 0) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: %s = %zu, but this FMU has no continuous states and no event indicators (%s "
-               "must be 0)",
-               function, count_name, nx, count_name);
+/* The call check, then an array of states, derivatives or nominals: one per state, given if any. */
+static bool state_array(ak_instance *instance, const ak_function_rule *call,
+                        const char *count_name, const char *array_name, const void *array,
+                        size_t nx) {
+    if (!ak_call_allowed(instance, call)) {
         return false;
+    }
+    if (AK_MODEL.n_states == 0 && nx != 0) {
+        return refuse_count(instance, call->name, count_name, nx);
     }
     if (nx != (size_t)AK_MODEL.n_states) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: %s = %zu, but this FMU has %d continuous states (numberOfContinuousStates)",
-               function, count_name, nx, AK_MODEL.n_states);
+               call->name, count_name, nx, AK_MODEL.n_states);
         return false;
     }
-    return ak_given(instance, function, nx, count_name, array, array_name);
+    return ak_given(instance, call->name, nx, count_name, array, array_name);
 }
 
-ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *call,
-                                 const char *count_name, size_t n) {
-    if (!ak_call_allowed(instance, call)) {
+typedef enum { STATES, DERIVATIVES, NOMINALS } state_array_kind;
+
+/* The states, their derivatives or their nominals into out. In Initialization Mode the states
+ * follow the parameters: brought up to date first (DISCARD when the parameters give none). */
+static ak_status get_states(ak_instance *instance, const ak_function_rule *call,
+                            const char *count_name, const char *array_name, double out[],
+                            size_t nx, state_array_kind kind) {
+    if (!state_array(instance, call, count_name, array_name, out, nx)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
-    if (n != 0) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: %s = %zu, but this FMU has %s (%s must be 0)", function, count_name, n,
-               AK_MODEL.n_states == 0 ? "no continuous states and no event indicators"
-                                      : "no event indicators",
-               count_name);
-        return AK_STATUS_ERROR;
+    if (nx == 0) {
+        return AK_STATUS_OK;
+    }
+    if (kind != NOMINALS && (instance->state & AK_INITIALIZATION_MODE) != 0 &&
+        ak_instance_update(instance, AK_GROUP_MAIN) == AK_STATUS_DISCARD) {
+        return AK_STATUS_DISCARD;
+    }
+    if (kind == DERIVATIVES) {
+        AK_MODEL.derivatives(&instance->data); /* cheap, and exact for the current states */
+    }
+    const unsigned int *vrs = kind == DERIVATIVES ? AK_MODEL.derivative_vrs : AK_MODEL.state_vrs;
+    for (size_t k = 0; k < nx; k++) {
+        out[k] = kind == NOMINALS ? AK_MODEL.state_nominals[k] : instance->data.values[vrs[k]];
     }
     return AK_STATUS_OK;
 }
 
-ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, double time) {
-    if (!ak_call_allowed(instance, call)) {
-        return AK_STATUS_ERROR;
-    }
-    const char *const function = call->name;
-    if (!isfinite(time)) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: time = %g is not finite", function,
-               time);
-        return AK_STATUS_ERROR;
-    }
-    /* No output depends on the time itself, so the outputs stay valid. The time may go back:
-     * an integrator may evaluate the model at earlier points after rejecting a step. */
-    ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: time = %.17g", function, time);
-    instance->time = time;
-    return AK_STATUS_OK;
+ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
+                                   const char *count_name, const char *array_name, double x[],
+                                   size_t nx) {
+    return get_states(instance, call, count_name, array_name, x, nx, STATES);
+}
+
+ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
+                                   const char *count_name, const char *array_name,
+                                   double derivatives[], size_t nx) {
+    return get_states(instance, call, count_name, array_name, derivatives, nx, DERIVATIVES);
+}
+
+ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
+                          const char *count_name, const char *array_name, double nominals[],
+                          size_t nx) {
+    return get_states(instance, call, count_name, array_name, nominals, nx, NOMINALS);
 }
 
 ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule *call,
                                    const char *count_name, const char *array_name,
                                    const double x[], size_t nx) {
-    if (!ak_call_allowed(instance, call)) {
-        return AK_STATUS_ERROR;
-    }
-    const char *const function = call->name;
-    if (!state_array(instance, function, count_name, array_name, x, nx)) {
+    if (!state_array(instance, call, count_name, array_name, x, nx)) {
         return AK_STATUS_ERROR;
     }
     for (size_t k = 0; k < nx; k++) {
         if (!isfinite(x[k])) {
             ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-                   "%s: %s[%zu] = %g (%s) is not finite; no state set", function, array_name, k,
-                   x[k], AK_MODEL.variables[AK_MODEL.state_vrs[k]].name);
+                   "%s: %s[%zu] = %g (%s) is not finite; no state set", call->name, array_name,
+                   k, x[k], AK_MODEL.variables[AK_MODEL.state_vrs[k]].name);
             return AK_STATUS_ERROR;
         }
     }
@@ -94,59 +103,27 @@ ak_status ak_set_continuous_states(ak_instance *instance, const ak_function_rule
     return AK_STATUS_OK;
 }
 
-ak_status ak_get_state_derivatives(ak_instance *instance, const ak_function_rule *call,
-                                   const char *count_name, const char *array_name,
-                                   double derivatives[], size_t nx) {
+ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, double time) {
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
-    if (!state_array(instance, function, count_name, array_name, derivatives, nx)) {
+    if (!isfinite(time)) {
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: time = %g is not finite", call->name,
+               time);
         return AK_STATUS_ERROR;
     }
-    if (!states_current(instance, nx)) {
-        return AK_STATUS_DISCARD;
-    }
-    if (nx > 0) {
-        AK_MODEL.derivatives(&instance->data); /* cheap, and exact for the current states */
-    }
-    for (size_t k = 0; k < nx; k++) {
-        derivatives[k] = instance->data.values[AK_MODEL.derivative_vrs[k]];
-    }
+    /* No output depends on the time itself, so the outputs stay valid. The time may go back:
+     * an integrator may evaluate the model at earlier points after rejecting a step. */
+    ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: time = %.17g", call->name, time);
+    instance->time = time;
     return AK_STATUS_OK;
 }
 
-ak_status ak_get_continuous_states(ak_instance *instance, const ak_function_rule *call,
-                                   const char *count_name, const char *array_name, double x[],
-                                   size_t nx) {
+ak_status ak_no_event_indicators(ak_instance *instance, const ak_function_rule *call,
+                                 const char *count_name, size_t n) {
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
-    if (!state_array(instance, function, count_name, array_name, x, nx)) {
-        return AK_STATUS_ERROR;
-    }
-    if (!states_current(instance, nx)) {
-        return AK_STATUS_DISCARD;
-    }
-    for (size_t k = 0; k < nx; k++) {
-        x[k] = instance->data.values[AK_MODEL.state_vrs[k]];
-    }
-    return AK_STATUS_OK;
-}
-
-ak_status ak_get_nominals(ak_instance *instance, const ak_function_rule *call,
-                          const char *count_name, const char *array_name, double nominals[],
-                          size_t nx) {
-    if (!ak_call_allowed(instance, call)) {
-        return AK_STATUS_ERROR;
-    }
-    const char *const function = call->name;
-    if (!state_array(instance, function, count_name, array_name, nominals, nx)) {
-        return AK_STATUS_ERROR;
-    }
-    for (size_t k = 0; k < nx; k++) {
-        nominals[k] = AK_MODEL.state_nominals[k];
-    }
-    return AK_STATUS_OK;
+    return n == 0 || refuse_count(instance, call->name, count_name, n) ? AK_STATUS_OK
+                                                                       : AK_STATUS_ERROR;
 }

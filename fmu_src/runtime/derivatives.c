@@ -1,13 +1,11 @@
-/* Derivatives for both FMI versions: output derivatives and directional (and FMI 3's adjoint)
- * derivatives. The mathematics is the model's (ak_model_jacobian, ak_model_output_derivatives);
- * this file selects rows and columns and applies seeds. The unknowns are outputs or
- * continuous-state derivatives, the knowns inputs or continuous states (the model's Jacobian has
- * a column per input, then per state). */
+/* Output, directional and adjoint derivatives for both FMI versions: the model's Jacobian (a
+ * column per input, then per state), of which this file selects rows and columns. */
 #include "runtime.h"
 
 ak_status ak_not_provided(const ak_instance *instance, const char *function, const char *flag) {
-    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: not provided by %s (modelDescription.xml: %s)",
-           function, AK_MODEL.model_identifier, flag);
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+           "%s: not provided by %s (modelDescription.xml: %s)", function,
+           AK_MODEL.model_identifier, flag);
     return AK_STATUS_ERROR;
 }
 
@@ -25,8 +23,9 @@ bool ak_derivative_variable(const ak_instance *instance, const char *function,
         return false;
     }
     if (variable->causality != causality) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: %s[%zu] = %u is %s, %s %s; expected an %s",
-               function, list_name, index, vr, variable->name,
+        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+               "%s: %s[%zu] = %u is %s, %s %s; expected an %s", function, list_name, index, vr,
+               variable->name,
                variable->causality == AK_CAUSALITY_PARAMETER ? "a" : "an",
                ak_causality_name(variable->causality), ak_causality_name(causality));
         return false;
@@ -36,7 +35,7 @@ bool ak_derivative_variable(const ak_instance *instance, const char *function,
 
 ak_status ak_output_derivatives(ak_instance *instance, const char *function,
                                 const unsigned int vr[], size_t nvr, double value[]) {
-    /* An output computed from others (models/model_derived.c) needs their values, lazy ones too. */
+    /* An output computed from others needs their values, lazy ones too. */
     const ak_status status = ak_instance_update(
         instance, ak_model_any_derived(vr, nvr) ? AK_GROUP_LAZY : AK_GROUP_MAIN);
     if (status == AK_STATUS_DISCARD) {
@@ -48,17 +47,10 @@ ak_status ak_output_derivatives(ak_instance *instance, const char *function,
     return status;
 }
 
-/* The column of a known (checked: an input or a state) in the model's Jacobian. */
-static size_t known_column(unsigned int vr) {
-    const int state = ak_state_index(AK_MODEL.state_vrs, vr);
-    return state >= 0 ? (size_t)(AK_MODEL.n_inputs + state) : (size_t)vr;
-}
-
 ak_status ak_derivative(ak_instance *instance, const unsigned int unknowns[], size_t n_unknowns,
                         const unsigned int knowns[], size_t n_knowns, const double seed[],
                         double sensitivity[], bool adjoint) {
-    /* An output computed from others (models/model_derived.c) needs their values, lazy ones too;
-     * the others come from the inputs alone. */
+    /* An output computed from others needs their values, lazy ones too. */
     if (ak_model_any_derived(unknowns, n_unknowns) &&
         ak_instance_update(instance, AK_GROUP_LAZY) == AK_STATUS_DISCARD) {
         return AK_STATUS_DISCARD;
@@ -69,13 +61,14 @@ ak_status ak_derivative(ak_instance *instance, const unsigned int unknowns[], si
         const size_t n =
             n_unknowns - first < AK_MAX_VARIABLES ? n_unknowns - first : AK_MAX_VARIABLES;
         ak_model_jacobian(&instance->data, &unknowns[first], n, J);
-        /* cppcheck 2.10 takes n for 0 once ak_model_jacobian is visible (n >= 1 here, since
-         * first < n_unknowns): a false knownConditionTrueFalse. */
+        /* n >= 1 (first < n_unknowns), which cppcheck 2.10 misses. */
         // cppcheck-suppress knownConditionTrueFalse
         for (size_t i = 0; i < n; i++) {
             double sum = 0.0;
             for (size_t j = 0; j < n_knowns; j++) {
-                const double d = J[i][known_column(knowns[j])];
+                const int state = ak_state_index(AK_MODEL.state_vrs, knowns[j]);
+                const double d =
+                    J[i][state >= 0 ? (size_t)(AK_MODEL.n_inputs + state) : (size_t)knowns[j]];
                 if (adjoint) {
                     sensitivity[j] += d * seed[first + i];
                 } else {

@@ -1,19 +1,8 @@
-/* The life cycle both FMI versions share: the debug-logging switch, the experiment, the end of
- * initialization (runtime/runtime.h). */
+/* The life cycle of both FMI versions: debug logging, the experiment, initialization, reset. */
 #include <math.h>
 #include <string.h>
 
 #include "runtime.h"
-
-static bool find_category(const char *name, ak_log_category *category) {
-    for (int c = 0; c < AK_N_LOG_CATEGORIES; c++) {
-        if (strcmp(name, AK_LOG_CATEGORY_NAMES[c]) == 0) {
-            *category = (ak_log_category)c;
-            return true;
-        }
-    }
-    return false;
-}
 
 ak_status ak_enter_state(ak_instance *instance, const ak_function_rule *call, ak_state state) {
     if (!ak_call_allowed(instance, call)) {
@@ -36,27 +25,30 @@ ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *ca
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
-    if (!ak_given(instance, function, n, "nCategories", categories, "categories")) {
+    if (!ak_given(instance, call->name, n, "nCategories", categories, "categories")) {
         return AK_STATUS_ERROR;
     }
-    ak_log_category found;
+    bool named[AK_N_LOG_CATEGORIES] = {false};
     for (size_t i = 0; i < n; i++) { /* every name checked before anything changes */
-        if (categories[i] == NULL || !find_category(categories[i], &found)) {
+        int c = 0;
+        while (c < AK_N_LOG_CATEGORIES &&
+               (categories[i] == NULL || strcmp(categories[i], AK_LOG_CATEGORY_NAMES[c]) != 0)) {
+            c++;
+        }
+        if (c == AK_N_LOG_CATEGORIES) {
             ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                    "%s: categories[%zu] = \"%s\" is not a log category of this FMU "
                    "(" AK_LOG_CATEGORY_LIST ")",
-                   function, i, categories[i] ? categories[i] : "(null)");
+                   call->name, i, categories[i] ? categories[i] : "(null)");
             return AK_STATUS_ERROR;
         }
+        named[c] = true;
     }
     on = on && instance->has_logger; /* nothing reaches an importer that gave no logger */
-    for (int category = 0; n == 0 && category < AK_N_LOG_CATEGORIES; category++) {
-        instance->log_enabled[category] = on;
-    }
-    for (size_t i = 0; i < n; i++) {
-        find_category(categories[i], &found);
-        instance->log_enabled[found] = on;
+    for (int c = 0; c < AK_N_LOG_CATEGORIES; c++) {
+        if (n == 0 || named[c]) {
+            instance->log_enabled[c] = on;
+        }
     }
     return AK_STATUS_OK;
 }
@@ -67,25 +59,23 @@ ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *cal
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
     if (tolerance_defined && !(isfinite(tolerance) && tolerance >= 0.0)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: tolerance = %g must be finite and >= 0", function, tolerance);
+               "%s: tolerance = %g must be finite and >= 0", call->name, tolerance);
         return AK_STATUS_ERROR;
     }
     if (!isfinite(start_time)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: startTime = %g is not finite",
-               function, start_time);
+               call->name, start_time);
         return AK_STATUS_ERROR;
     }
     if (stop_time_defined && !(isfinite(stop_time) && stop_time >= start_time)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: stopTime = %.17g must be finite and >= startTime = %.17g", function,
+               "%s: stopTime = %.17g must be finite and >= startTime = %.17g", call->name,
                stop_time, start_time);
         return AK_STATUS_ERROR;
     }
-    /* No model integrates with an error control (co-simulation steps are closed-form, model
-     * exchange is the importer's): the tolerance has nothing to control. */
+    /* No model integrates with an error control: the tolerance has nothing to control. */
     instance->time = start_time;
     instance->stop_time_defined = stop_time_defined;
     instance->stop_time = stop_time;
@@ -97,13 +87,12 @@ ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_r
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const char *const function = call->name;
     if (AK_MODEL.initialize != NULL) {
         if (AK_MODEL.initialize(&instance->data) == AK_EVAL_FAILED) {
             ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                    "%s: the parameters give no initial state (see the message before); the "
                    "instance stays in %s",
-                   function, ak_state_name(instance, AK_INITIALIZATION_MODE));
+                   call->name, ak_state_name(instance, AK_INITIALIZATION_MODE));
             return AK_STATUS_ERROR;
         }
         ak_instance_inputs_changed(instance);

@@ -36,8 +36,7 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
 
 /* The refusal of a function behind a capability flag the model does not claim. */
 ak_status ak_not_provided(const ak_instance *instance, const char *function, const char *flag);
-/* The first derivatives of the checked outputs vr (scalars), after bringing the outputs up to
- * date. */
+/* The first derivatives of the checked outputs vr (scalars). */
 ak_status ak_output_derivatives(ak_instance *instance, const char *function,
                                 const unsigned int vr[], size_t nvr, double value[]);
 /* sensitivity = J seed (directional) or J^T seed (adjoint: sensitivity accumulated, zeroed by
@@ -54,10 +53,8 @@ bool ak_derivative_variable(const ak_instance *instance, const char *function,
 
 /* --- co-simulation (stepping.c) ---------------------------------------------------------------- */
 
-/* A step from t by h (checked: finite, h > 0, t the current time, not past the stop time):
- * the model's states advanced, the inputs moved along their derivatives, the time moved. A model
- * with states or evaluate_in_step is evaluated at the end; when that fails the step is not taken
- * (DISCARD, logged; the instance in the layer's step_discarded_state, every value as before). */
+/* A step from t by h (checked). A model with states or evaluate_in_step is evaluated at the end;
+ * when that fails the step is not taken (DISCARD; the layer's step_discarded_state). */
 ak_status ak_do_step(ak_instance *instance, const char *function, double t, double h);
 /* Input derivatives (FMI 2 only): of the inputs vr[i], order[i] 1 or 2, finite. */
 ak_status ak_set_input_derivatives(ak_instance *instance, const char *function,
@@ -106,22 +103,18 @@ void ak_free_all_fmu_states(ak_instance *instance);
 ak_status ak_enter_state(ak_instance *instance, const ak_function_rule *call, ak_state state);
 /* The instance as instantiated (fmiXReset). */
 ak_status ak_reset(ak_instance *instance, const ak_function_rule *call);
-/* fmiXSetDebugLogging: switches the n named categories (all when n is 0) after checking every
- * name, so that a bad call changes nothing. */
+/* Switches the n named categories (all when n is 0). */
 ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *call, bool on,
                                size_t n, const char *const categories[]);
-/* The experiment: tolerance (if defined) finite and >= 0, start time finite, stop time (if
- * defined) finite and not before the start; then the instance is in state `then`
- * (fmi2SetupExperiment: Instantiated; fmi3EnterInitializationMode: Initialization Mode). */
+/* The experiment (checked), then the instance in state `then` (fmi2SetupExperiment:
+ * Instantiated; fmi3EnterInitializationMode: Initialization Mode). */
 ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *call,
                               bool tolerance_defined, double tolerance, double start_time,
                               bool stop_time_defined, double stop_time, ak_state then);
-/* The states from the parameters, then the outputs at the initial inputs; Event Mode (model
- * exchange) or Step Mode (co-simulation). A refusal of the parameters leaves the instance in
- * Initialization Mode, so that the importer can correct them and call again. */
+/* The states from the parameters, then the outputs; Event Mode or Step Mode. Refused parameters
+ * leave the instance in Initialization Mode, to be corrected. */
 ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_rule *call);
-/* Frees what the runtime allocated for the instance (its name, the FMU states the importer did
- * not free); the layer then frees its own instance. */
+/* Frees what the runtime allocated for the instance; the layer then frees its own. */
 void ak_instance_release(ak_instance *instance);
 
 #endif

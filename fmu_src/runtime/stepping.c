@@ -1,32 +1,22 @@
-/* Co-simulation, for both FMI versions: the step and the input derivatives (FMI 2's
- * fmi2SetRealInputDerivatives; FMI 3 has none, so its inputs are held over a step). A step
- * advances the model's continuous states, if it has any (ak_model.step, with the inputs and their
- * derivatives at the step start), then moves the time and the inputs: held over the step, or
- * moved along the polynomials of their derivatives; the outputs at the end are those of the
- * states and inputs there. For a model without states the map from inputs to outputs is
- * algebraic. */
+/* Co-simulation for both FMI versions: a step advances the model's states, then moves the time
+ * and the inputs: held, or (FMI 2 only) along the polynomials of their derivatives. */
 #include <math.h>
 #include <string.h>
 
 #include "runtime.h"
 
-/* Relative tolerance on communication times; the same as fmpy's isclose, so that a step that
- * fmpy lands on the stop time within its own tolerance is accepted. */
+/* fmpy's isclose: a step that fmpy lands on the stop time within its tolerance is accepted. */
 static const double TIME_RELATIVE_TOLERANCE = 1e-9;
 
 static bool times_close(double a, double b) {
-    /* Not fmax: that is a library call, paid at every step; the two agree on non-NaN values. */
+    /* Not fmax: a library call at every step. */
     const double scale = fabs(a) > fabs(b) ? fabs(a) : fabs(b);
     return fabs(a - b) <= TIME_RELATIVE_TOLERANCE * scale;
 }
 
-/* Moves the inputs along their polynomials u + s du + s^2/2 d2u to the end of a step of size
- * h, and their first derivatives with them. Refuses (false, logged, nothing changed) when a value
- * would overflow. Marks the outputs stale only if an input changed. */
+/* Moves the inputs along u + s du + s^2/2 d2u to the end of a step of size h, and their first
+ * derivatives with them; false (logged, nothing changed) when a value would overflow. */
 static bool advance_inputs(ak_instance *instance, const char *function, double h) {
-    if (!instance->data.any_input_derivative) {
-        return true; /* zero-order hold: nothing moves */
-    }
     double value[AK_MAX_INPUTS], slope[AK_MAX_INPUTS];
     for (int k = 0; k < AK_MODEL.n_inputs; k++) {
         const double d1 = instance->data.input_derivatives[k][0];
@@ -84,23 +74,19 @@ static bool step_arguments_valid(const ak_instance *instance, const char *functi
     return true;
 }
 
-/* A step of a model with states or whose evaluation can fail: the states are advanced, then,
- * with evaluate_in_step, the outputs are evaluated at the end of the step (else they wait for a
- * read). When either fails the step is not taken (DISCARD): time, states, inputs and outputs stay
- * those of the last successful communication point, and the importer may go back with an FMU
- * state or reset, or terminate. */
+/* A step of a model with states or evaluate_in_step: the states advanced, the inputs moved, then
+ * with evaluate_in_step the outputs evaluated at the end. When either fails the step is not
+ * taken (DISCARD): every value stays that of the last communication point. */
 static ak_status step_evaluating(ak_instance *instance, const char *function, double t,
                                  double h) {
-    /* What a refused step must put back: the values and input derivatives, when the states or
-     * the inputs move and something can fail after they moved (a failed model step or a failed
-     * evaluation alone writes nothing; the inputs move only with derivatives). */
+    /* A refused step puts back the values and input derivatives when something moved before
+     * what can fail (a failed model step or evaluation alone writes nothing). */
     const bool any_derivative = instance->data.any_input_derivative;
     const bool moves = (AK_MODEL.step != NULL || any_derivative) &&
                        (AK_MODEL.evaluate_in_step || any_derivative);
     double saved_values[AK_MAX_VARIABLES];
     double saved_derivatives[AK_MAX_INPUTS][AK_MAX_INPUT_DERIVATIVE_ORDER];
     const size_t n_values = sizeof(double) * (size_t)AK_MODEL.n_value_references;
-    const bool saved_any = instance->data.any_input_derivative;
     if (moves) {
         memcpy(saved_values, instance->data.values, n_values);
         memcpy(saved_derivatives, instance->data.input_derivatives, sizeof saved_derivatives);
@@ -110,24 +96,21 @@ static ak_status step_evaluating(ak_instance *instance, const char *function, do
         stepped = AK_MODEL.step(&instance->data, h); /* failing, it changed nothing */
         ak_instance_inputs_changed(instance);
     }
-    if (stepped != AK_EVAL_FAILED && instance->data.any_input_derivative &&
-        !advance_inputs(instance, function, h)) { /* held inputs: no call, as ak_do_step */
-        if (moves) {
-            memcpy(instance->data.values, saved_values, n_values); /* the states moved */
-        }
+    if (stepped != AK_EVAL_FAILED && any_derivative && !advance_inputs(instance, function, h)) {
+        memcpy(instance->data.values, saved_values, n_values); /* the states moved */
         return AK_STATUS_ERROR;
     }
-    const ak_status status = stepped == AK_EVAL_FAILED  ? AK_STATUS_DISCARD
-                             : AK_MODEL.evaluate_in_step ? ak_instance_update(instance, AK_GROUP_MAIN)
-                                                         : AK_STATUS_OK;
+    const ak_status status =
+        stepped == AK_EVAL_FAILED   ? AK_STATUS_DISCARD
+        : AK_MODEL.evaluate_in_step ? ak_instance_update(instance, AK_GROUP_MAIN)
+                                    : AK_STATUS_OK;
     if (status == AK_STATUS_DISCARD) {
         if (moves) {
             memcpy(instance->data.values, saved_values, n_values);
             memcpy(instance->data.input_derivatives, saved_derivatives, sizeof saved_derivatives);
-            instance->data.any_input_derivative = saved_any;
+            instance->data.any_input_derivative = any_derivative;
         }
-        /* The outputs are those of the last successful evaluation; a read evaluates again at the
-         * restored inputs (and fails again if they are the singular ones). */
+        /* A read evaluates again at the restored inputs. */
         ak_instance_inputs_changed(instance);
         instance->state = instance->layer->step_discarded_state;
         ak_log(instance, AK_LOG_WARNING, AK_STATUS_DISCARD,
