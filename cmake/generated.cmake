@@ -50,8 +50,7 @@ set(AK_FMI2_SOURCES
   fmu_src/fmi2/fmi2_state_machine.c
   fmu_src/fmi2/fmi2_lifecycle.c
   fmu_src/fmi2/fmi2_values.c
-  fmu_src/fmi2/fmi2_cosimulation.c
-  fmu_src/fmi2/fmi2_model_exchange.c)
+  fmu_src/fmi2/fmi2_stepping.c)
 set(AK_FMI2_HEADERS
   fmu_src/fmi2/fmi2_layer.h
   fmu_src/runtime/runtime.h

@@ -119,7 +119,7 @@ RUNTIME_HEADERS = ["runtime/runtime.h", "runtime/instance.h", "common/ak_bytes.h
 # beside every model: the runtime, the model-side logging and the chain rule of derived outputs
 MODEL_SOURCES = RUNTIME_SOURCES + ["models/model_log.c", "models/model_derived.c"]
 FMI2_SOURCES = ["fmi2/fmi2_state_machine.c", "fmi2/fmi2_lifecycle.c", "fmi2/fmi2_values.c",
-                "fmi2/fmi2_cosimulation.c", "fmi2/fmi2_model_exchange.c"]
+                "fmi2/fmi2_stepping.c"]
 FMI2_HEADERS = ["fmi2/fmi2_layer.h"] + RUNTIME_HEADERS
 
 # The models, each a folder fmu_src/models/<name>/ with description.py, each built as an FMI 2.0

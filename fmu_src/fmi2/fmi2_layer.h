@@ -1,5 +1,4 @@
-/* The FMI 2.0 layer over the runtime (runtime/runtime.h): the signatures, fmi2Status, the state
- * table (fmi2_state_machine.c), the master's callbacks and the co-simulation status functions. */
+/* The FMI 2.0 layer over the runtime: the function names, the state table and the instance. */
 #ifndef ANGULAR_KINEMATICS_FMI2_LAYER_H
 #define ANGULAR_KINEMATICS_FMI2_LAYER_H
 
@@ -51,11 +50,9 @@ typedef enum {
     AK_N_FMI2_FUNCTIONS
 } ak_fmi2_function;
 
-/* The allowed states and interfaces of every FMI 2 function (fmi2_state_machine.c). */
 extern const ak_function_rule FMI2_RULES[AK_N_FMI2_FUNCTIONS];
 
-/* The runtime's instance and a copy of the master's callbacks, which need not outlive
- * fmi2Instantiate. */
+/* A copy of the master's callbacks: they need not outlive fmi2Instantiate. */
 typedef struct {
     ak_instance base; /* first: an fmi2Component is also an ak_instance */
     fmi2CallbackFunctions functions;

@@ -1,5 +1,4 @@
-/* FMI 2.0 life cycle: what the layer tells the runtime of itself (FMI2_LAYER), instantiation,
- * initialization, termination, reset, freeing, debug logging and the FMU states. */
+/* FMI 2.0 life cycle: the layer's description, the instance's life and the FMU states. */
 #include <string.h>
 
 #include "fmi2_layer.h"
@@ -129,11 +128,9 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                               functions->logger != NULL, loggingOn != fmi2False)) {
             return instance;
         }
-    }
-    ak_log_without_instance(send_unborn, &who, "%s: out of memory allocating the instance", self);
-    if (instance != NULL) {
         functions->freeMemory(instance);
     }
+    ak_log_without_instance(send_unborn, &who, "%s: out of memory allocating the instance", self);
     return NULL;
 }
 

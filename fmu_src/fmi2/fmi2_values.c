@@ -1,6 +1,4 @@
-/* FMI 2.0 values and their derivatives over runtime/values.c, derivatives.c and stepping.c. No
- * model has Boolean or String variables; a model without a derivative function is refused naming
- * the capability flag that its modelDescription.xml sets to false / 0. */
+/* FMI 2.0 values and their derivatives. No model has Boolean or String variables. */
 #include <math.h>
 
 #include "fmi2_layer.h"
@@ -53,7 +51,6 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
     return fmi2OK;
 }
 
-/* Any value reference given to the Boolean and String functions is unknown. */
 static fmi2Status reject_absent_type(const ak_instance *instance, ak_fmi2_function function,
                                      const char *type, size_t nvr, const void *vr,
                                      const void *values) {
@@ -91,16 +88,13 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 
 enum { MAX_OUTPUT_DERIVATIVE_ORDER = 1 };
 
-/* The state check, then the capability flag the model must claim. */
 static bool offered(ak_instance *instance, ak_fmi2_function function, bool provided,
                     const char *flag) {
-    if (!fmi2_allowed(instance, function)) {
-        return false;
-    }
-    if (!provided) {
+    const bool allowed = fmi2_allowed(instance, function);
+    if (allowed && !provided) {
         (void)ak_not_provided(instance, fmi2_name(function), flag);
     }
-    return provided;
+    return allowed && provided;
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,

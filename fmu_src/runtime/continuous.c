@@ -1,10 +1,8 @@
-/* Model exchange for both FMI versions: the continuous states are values at ak_model.state_vrs;
- * no model has event indicators, so no event ever happens. */
+/* Model exchange for both FMI versions; no model has event indicators, so no event happens. */
 #include <math.h>
 
 #include "runtime.h"
 
-/* A count that must be 0: logged; false. */
 static bool refuse_count(const ak_instance *instance, const char *function, const char *count_name,
                          size_t n) {
     ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
@@ -36,8 +34,7 @@ static bool state_array(ak_instance *instance, const ak_function_rule *call,
 
 typedef enum { STATES, DERIVATIVES, NOMINALS } state_array_kind;
 
-/* The states, their derivatives or their nominals into out. In Initialization Mode the states
- * follow the parameters: brought up to date first (DISCARD when the parameters give none). */
+/* In Initialization Mode the states follow the parameters (DISCARD when they give none). */
 static ak_status get_states(ak_instance *instance, const ak_function_rule *call,
                             const char *count_name, const char *array_name, double out[],
                             size_t nx, state_array_kind kind) {
@@ -112,8 +109,7 @@ ak_status ak_set_time(ak_instance *instance, const ak_function_rule *call, doubl
                time);
         return AK_STATUS_ERROR;
     }
-    /* No output depends on the time itself, so the outputs stay valid. The time may go back:
-     * an integrator may evaluate the model at earlier points after rejecting a step. */
+    /* No output depends on the time, which may go back when an integrator rejects a step. */
     ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "%s: time = %.17g", call->name, time);
     instance->time = time;
     return AK_STATUS_OK;

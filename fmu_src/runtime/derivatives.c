@@ -1,5 +1,4 @@
-/* Output, directional and adjoint derivatives for both FMI versions: the model's Jacobian (a
- * column per input, then per state), of which this file selects rows and columns. */
+/* Derivatives for both FMI versions from the model's Jacobian: a column per input, then state. */
 #include "runtime.h"
 
 ak_status ak_not_provided(const ak_instance *instance, const char *function, const char *flag) {
@@ -25,8 +24,7 @@ bool ak_derivative_variable(const ak_instance *instance, const char *function,
     if (variable->causality != causality) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: %s[%zu] = %u is %s, %s %s; expected an %s", function, list_name, index, vr,
-               variable->name,
-               variable->causality == AK_CAUSALITY_PARAMETER ? "a" : "an",
+               variable->name, variable->causality == AK_CAUSALITY_PARAMETER ? "a" : "an",
                ak_causality_name(variable->causality), ak_causality_name(causality));
         return false;
     }
@@ -50,18 +48,15 @@ ak_status ak_output_derivatives(ak_instance *instance, const char *function,
 ak_status ak_derivative(ak_instance *instance, const unsigned int unknowns[], size_t n_unknowns,
                         const unsigned int knowns[], size_t n_knowns, const double seed[],
                         double sensitivity[], bool adjoint) {
-    /* An output computed from others needs their values, lazy ones too. */
     if (ak_model_any_derived(unknowns, n_unknowns) &&
         ak_instance_update(instance, AK_GROUP_LAZY) == AK_STATUS_DISCARD) {
         return AK_STATUS_DISCARD;
     }
-    /* Row by row, at most AK_MAX_VARIABLES rows at a time. */
     double J[AK_MAX_VARIABLES][AK_MAX_KNOWNS];
     for (size_t first = 0; first < n_unknowns; first += AK_MAX_VARIABLES) {
         const size_t n =
             n_unknowns - first < AK_MAX_VARIABLES ? n_unknowns - first : AK_MAX_VARIABLES;
         ak_model_jacobian(&instance->data, &unknowns[first], n, J);
-        /* n >= 1 (first < n_unknowns), which cppcheck 2.10 misses. */
         // cppcheck-suppress knownConditionTrueFalse
         for (size_t i = 0; i < n; i++) {
             double sum = 0.0;

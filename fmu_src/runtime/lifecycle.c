@@ -22,10 +22,8 @@ ak_status ak_reset(ak_instance *instance, const ak_function_rule *call) {
 
 ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *call, bool on,
                                size_t n, const char *const categories[]) {
-    if (!ak_call_allowed(instance, call)) {
-        return AK_STATUS_ERROR;
-    }
-    if (!ak_given(instance, call->name, n, "nCategories", categories, "categories")) {
+    if (!ak_call_allowed(instance, call) ||
+        !ak_given(instance, call->name, n, "nCategories", categories, "categories")) {
         return AK_STATUS_ERROR;
     }
     bool named[AK_N_LOG_CATEGORIES] = {false};
@@ -99,8 +97,7 @@ ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_r
     }
     /* The outputs at the initial inputs; a failed evaluation is reported by the reads. */
     (void)ak_instance_update(instance, AK_GROUP_MAIN);
-    instance->state =
-        instance->interface == AK_MODEL_EXCHANGE ? AK_EVENT_MODE : AK_STEP_MODE;
+    instance->state = instance->interface == AK_MODEL_EXCHANGE ? AK_EVENT_MODE : AK_STEP_MODE;
     return AK_STATUS_OK;
 }
 

@@ -39,14 +39,12 @@ ak_status ak_not_provided(const ak_instance *instance, const char *function, con
 /* The first derivatives of the checked outputs vr (scalars). */
 ak_status ak_output_derivatives(ak_instance *instance, const char *function,
                                 const unsigned int vr[], size_t nvr, double value[]);
-/* sensitivity = J seed (directional) or J^T seed (adjoint: sensitivity accumulated, zeroed by
- * the caller), J the rows of the checked unknowns (scalars: outputs or state derivatives) and the
- * columns of the checked knowns (inputs or states). */
+/* sensitivity = J seed, or += J^T seed (adjoint: zeroed by the caller); J's rows are the checked
+ * unknowns (outputs or state derivatives), its columns the checked knowns (inputs or states). */
 ak_status ak_derivative(ak_instance *instance, const unsigned int unknowns[], size_t n_unknowns,
                         const unsigned int knowns[], size_t n_knowns, const double seed[],
                         double sensitivity[], bool adjoint);
-/* A checked unknown or known: of the given causality or (also, when not NULL) one of the states
- * or their derivatives; logs naming list_name[index] when not. */
+/* Of the given causality or (also not NULL) one of also; logs naming list_name[index] if not. */
 bool ak_derivative_variable(const ak_instance *instance, const char *function,
                             const char *list_name, size_t index, unsigned int vr,
                             ak_causality causality, const unsigned int *also);
@@ -98,21 +96,18 @@ void ak_free_all_fmu_states(ak_instance *instance);
 
 /* --- life cycle (lifecycle.c) ------------------------------------------------------------------ */
 
-/* A move of the state machine and nothing else (fmi2EnterInitializationMode, fmiXTerminate,
- * fmiXEnterEventMode, ...). */
+/* A move of the state machine and nothing else. */
 ak_status ak_enter_state(ak_instance *instance, const ak_function_rule *call, ak_state state);
 /* The instance as instantiated (fmiXReset). */
 ak_status ak_reset(ak_instance *instance, const ak_function_rule *call);
 /* Switches the n named categories (all when n is 0). */
 ak_status ak_set_debug_logging(ak_instance *instance, const ak_function_rule *call, bool on,
                                size_t n, const char *const categories[]);
-/* The experiment (checked), then the instance in state `then` (fmi2SetupExperiment:
- * Instantiated; fmi3EnterInitializationMode: Initialization Mode). */
+/* The experiment (checked), then the instance in state `then`. */
 ak_status ak_setup_experiment(ak_instance *instance, const ak_function_rule *call,
                               bool tolerance_defined, double tolerance, double start_time,
                               bool stop_time_defined, double stop_time, ak_state then);
-/* The states from the parameters, then the outputs; Event Mode or Step Mode. Refused parameters
- * leave the instance in Initialization Mode, to be corrected. */
+/* Refused parameters leave the instance in Initialization Mode, to be corrected. */
 ak_status ak_exit_initialization_mode(ak_instance *instance, const ak_function_rule *call);
 /* Frees what the runtime allocated for the instance; the layer then frees its own. */
 void ak_instance_release(ak_instance *instance);

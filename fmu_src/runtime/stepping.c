@@ -1,5 +1,4 @@
-/* Co-simulation for both FMI versions: a step advances the model's states, then moves the time
- * and the inputs: held, or (FMI 2 only) along the polynomials of their derivatives. */
+/* Co-simulation for both FMI versions: the inputs held, or moved along their derivatives. */
 #include <math.h>
 #include <string.h>
 
@@ -14,8 +13,7 @@ static bool times_close(double a, double b) {
     return fabs(a - b) <= TIME_RELATIVE_TOLERANCE * scale;
 }
 
-/* Moves the inputs along u + s du + s^2/2 d2u to the end of a step of size h, and their first
- * derivatives with them; false (logged, nothing changed) when a value would overflow. */
+/* u + s du + s^2/2 d2u and its slope at s = h; false (logged, nothing changed) on overflow. */
 static bool advance_inputs(ak_instance *instance, const char *function, double h) {
     double value[AK_MAX_INPUTS], slope[AK_MAX_INPUTS];
     for (int k = 0; k < AK_MODEL.n_inputs; k++) {
@@ -74,13 +72,9 @@ static bool step_arguments_valid(const ak_instance *instance, const char *functi
     return true;
 }
 
-/* A step of a model with states or evaluate_in_step: the states advanced, the inputs moved, then
- * with evaluate_in_step the outputs evaluated at the end. When either fails the step is not
- * taken (DISCARD): every value stays that of the last communication point. */
 static ak_status step_evaluating(ak_instance *instance, const char *function, double t,
                                  double h) {
-    /* A refused step puts back the values and input derivatives when something moved before
-     * what can fail (a failed model step or evaluation alone writes nothing). */
+    /* Saved only when something moves before what can fail (which alone writes nothing). */
     const bool any_derivative = instance->data.any_input_derivative;
     const bool moves = (AK_MODEL.step != NULL || any_derivative) &&
                        (AK_MODEL.evaluate_in_step || any_derivative);
@@ -135,7 +129,6 @@ ak_status ak_do_step(ak_instance *instance, const char *function, double t, doub
     if (AK_MODEL.evaluate_in_step || AK_MODEL.step != NULL) {
         return step_evaluating(instance, function, t, h);
     }
-    /* Without input derivatives the inputs are held: no call. */
     if (instance->data.any_input_derivative && !advance_inputs(instance, function, h)) {
         return AK_STATUS_ERROR;
     }

@@ -7,7 +7,7 @@
  * computed and a warning is logged (fmi2Warning); at the singularity itself, or when a result
  * overflows, the evaluation fails with a message naming theta[2], its value and the distance,
  * the outputs keep their last valid values (singularity_distance excepted: it is always the
- * current one), reads return fmi2Discard and so does fmi2DoStep (fmi2_cosimulation.c). */
+ * current one), reads return fmi2Discard and so does fmi2DoStep (fmi2_stepping.c). */
 #include "EulerRates_variables.h"
 
 #include "kinematics_general.h"
