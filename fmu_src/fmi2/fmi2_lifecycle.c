@@ -135,11 +135,10 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
 }
 
 void fmi2FreeInstance(fmi2Component c) {
-    if (!fmi2_allowed(c, AK_FMI2_FREE_INSTANCE)) {
-        return;
+    if (fmi2_allowed(c, AK_FMI2_FREE_INSTANCE)) {
+        ak_instance_release(c);
+        ((fmi2_instance *)c)->functions.freeMemory(c);
     }
-    ak_instance_release(c);
-    ((fmi2_instance *)c)->functions.freeMemory(c);
 }
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
