@@ -1,5 +1,4 @@
-/* FMI 3.0 output, directional and adjoint derivatives over runtime/derivatives.c, and the
- * per-element dependencies: this file checks the arguments and expands arrays into elements. */
+/* FMI 3.0 derivatives and dependencies: the arguments checked, arrays expanded into elements. */
 #include <math.h>
 
 #include "fmi3_layer.h"
@@ -26,11 +25,9 @@ static const ak3_array *array_of_causality(const ak_instance *instance, const ch
     return array;
 }
 
-/* The highest order fmi3GetOutputDerivatives gives: maxOutputDerivativeOrder. */
 enum { MAX_OUTPUT_DERIVATIVE_ORDER = 1 };
 
-/* Checks a list of value references of one causality and expands it into its *n_elements
- * elements. also: arrays accepted besides (the states or their derivatives), or NULL. */
+/* Expands checked value references into elements; also: other arrays accepted, or NULL. */
 static bool arrays_valid(const ak_instance *instance, const char *function, const char *list_name,
                          const unsigned int vr[], size_t n, ak_causality causality,
                          const unsigned int *also, unsigned int elements[], size_t *n_elements) {
@@ -94,8 +91,6 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance c, const fmi3ValueReference vr[
     return fmi3_status(ak_output_derivatives(c, self, elements, n, values));
 }
 
-/* sensitivity = J seed (directional) or J^T seed (adjoint), J the rows of the unknowns'
- * elements and the columns of the knowns' elements. */
 static fmi3Status derivative(fmi3Instance c, bool adjoint, const fmi3ValueReference unknowns[],
                              size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
                              const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
@@ -162,8 +157,7 @@ fmi3Status fmi3GetAdjointDerivative(fmi3Instance c, const fmi3ValueReference unk
                       nSensitivity);
 }
 
-/* Per-element dependencies (FMI 3, section 2.2.10). The variable table lists the inputs only, so
- * a model with states does not provide them. The output array asked for; NULL after logging. */
+/* The variable table lists the inputs only, so a model with states does not provide them. */
 static const ak3_array *dependent_array(const ak_instance *instance, ak3_function function,
                                         const char *list_name, unsigned int vr) {
     if (!fmi3_allowed(instance, function)) {

@@ -17,7 +17,6 @@ static void send_unborn(const void *context, const char *message) {
     }
 }
 
-/* The checks and the allocation common to both interfaces; NULL after logging why. */
 static fmi3_instance *instantiate(const char *function, fmi3String instanceName,
                                   fmi3String instantiationToken, fmi3Boolean loggingOn,
                                   const fmi3_logger *who, ak_interface interface) {

@@ -1,13 +1,11 @@
-/* The allowed-state table of FMI 3.0 (fmi-standard's docs/2_3_common_states.adoc, 3_2 and 4_2).
- * Co-simulation instances never use Event Mode (fmi3InstantiateCoSimulation refuses
- * eventModeUsed), and no instance enters Configuration or Reconfiguration Mode (no structural
- * parameters). */
+/* The allowed-state table of FMI 3.0. Co-simulation instances never use Event Mode, and no
+ * instance enters Configuration or Reconfiguration Mode (no structural parameters). */
 #include "fmi3_layer.h"
 
 enum {
     ANY_STATE = AK_INSTANTIATED | AK_CONFIGURATION_MODE | AK_INITIALIZATION_MODE | AK_EVENT_MODE |
                 AK_STEP_MODE | AK_CONTINUOUS_TIME_MODE | AK_RECONFIGURATION_MODE | AK_TERMINATED,
-    /* In Instantiated, the start values or what was set since (2_3, State: Instantiated). */
+    /* In Instantiated, the start values or what was set since. */
     READABLE = AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_EVENT_MODE | AK_STEP_MODE |
                AK_CONTINUOUS_TIME_MODE | AK_TERMINATED,
     /* Parameters in Instantiated and Initialization Mode, the (continuous) inputs also after. */
@@ -15,7 +13,7 @@ enum {
                AK_CONTINUOUS_TIME_MODE,
     DERIVABLE = AK_INITIALIZATION_MODE | AK_EVENT_MODE | AK_STEP_MODE | AK_CONTINUOUS_TIME_MODE |
                 AK_TERMINATED,
-    /* Model exchange's states, derivatives, nominals and event indicators (2_3). */
+    /* Model exchange's states, derivatives, nominals and event indicators. */
     ME_READABLE = AK_INITIALIZATION_MODE | AK_EVENT_MODE | AK_CONTINUOUS_TIME_MODE | AK_TERMINATED
 };
 
@@ -70,7 +68,7 @@ const ak_function_rule FMI3_RULES[AK3_N_FUNCTIONS] = {
     [AK3_UPDATE_DISCRETE_STATES] = {"fmi3UpdateDiscreteStates", AK_EVENT_MODE, ME},
     [AK3_ENTER_CONTINUOUS_TIME_MODE] = {"fmi3EnterContinuousTimeMode", AK_EVENT_MODE, ME},
     [AK3_COMPLETED_INTEGRATOR_STEP] = {"fmi3CompletedIntegratorStep", AK_CONTINUOUS_TIME_MODE, ME},
-    /* In Event Mode time advances only through fmi3UpdateDiscreteStates (3_2). */
+    /* In Event Mode time advances only through fmi3UpdateDiscreteStates. */
     [AK3_SET_TIME] = {"fmi3SetTime", AK_CONTINUOUS_TIME_MODE, ME},
     [AK3_SET_CONTINUOUS_STATES] = {"fmi3SetContinuousStates", AK_CONTINUOUS_TIME_MODE, ME},
     [AK3_GET_CONTINUOUS_STATE_DERIVATIVES] = {"fmi3GetContinuousStateDerivatives", ME_READABLE,

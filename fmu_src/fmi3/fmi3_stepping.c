@@ -1,6 +1,5 @@
-/* FMI 3.0 time: co-simulation's step (runtime/stepping.c) and model exchange's continuous states
- * (runtime/continuous.c). FMI 3 gives no input derivatives: a step holds the inputs. The models
- * have no event indicators, so no event ever happens. */
+/* FMI 3.0 time: the step and the continuous states. FMI 3 has no input derivatives: a step holds
+ * the inputs. The models have no event indicators, so no event ever happens. */
 #include "fmi3_layer.h"
 
 fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 currentCommunicationPoint,

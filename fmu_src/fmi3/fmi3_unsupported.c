@@ -1,12 +1,9 @@
-/* FMI 3.0 functions for what the models do not have: types other than Float64 and Int64
- * (Enumeration), clocks, structural parameters and scheduled execution. Each refuses with
- * fmi3Error and changes nothing; a getter or setter given no value reference and no value has
- * nothing to refuse and returns fmi3OK, as its FMI 2 counterpart does. */
+/* FMI 3.0 functions for what the models lack: each refuses with fmi3Error and changes nothing,
+ * except a getter or setter given nothing to read or write, which returns fmi3OK as in FMI 2. */
 #include <string.h>
 
 #include "fmi3_layer.h"
 
-/* A getter or setter of a type no variable has: every value reference is unknown. */
 static fmi3Status absent_type(fmi3Instance c, ak3_function function,
                               const fmi3ValueReference vr[], size_t nvr, const void *values,
                               size_t nValues) {
@@ -21,7 +18,6 @@ static fmi3Status absent_type(fmi3Instance c, ak3_function function,
         return fmi3Error;
     }
     if (nvr > 0 || nValues > 0) {
-        /* The type is the name's end: fmi3GetInt8, fmi3SetInt8. */
         ak_log(c, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: valueReferences[0] = %u: this FMU has no %s variables (nValueReferences = "
                "%zu, nValues = %zu)",
@@ -31,8 +27,8 @@ static fmi3Status absent_type(fmi3Instance c, ak3_function function,
     return fmi3OK;
 }
 
-/* A function of a feature the models lack: refused in every state. */
-static fmi3Status not_supported(fmi3Instance c, const char *function, const char *why) {
+/* The arguments after why are those the refused function ignores. */
+static fmi3Status not_supported(fmi3Instance c, const char *function, const char *why, ...) {
     if (c != NULL) {
         ak_log(c, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: not supported: %s", function, why);
     }
@@ -154,62 +150,52 @@ fmi3Status fmi3SetBinary(fmi3Instance c, const fmi3ValueReference vr[], size_t n
 static const char NO_CLOCKS[] = "this FMU has no Clock variables";
 
 fmi3Status fmi3GetClock(fmi3Instance c, const fmi3ValueReference vr[], size_t n, fmi3Clock v[]) {
-    (void)vr, (void)n, (void)v;
-    return not_supported(c, "fmi3GetClock", NO_CLOCKS);
+    return not_supported(c, "fmi3GetClock", NO_CLOCKS, vr, n, v);
 }
 
 fmi3Status fmi3SetClock(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                         const fmi3Clock v[]) {
-    (void)vr, (void)n, (void)v;
-    return not_supported(c, "fmi3SetClock", NO_CLOCKS);
+    return not_supported(c, "fmi3SetClock", NO_CLOCKS, vr, n, v);
 }
 
 fmi3Status fmi3GetIntervalDecimal(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                                   fmi3Float64 v[], fmi3IntervalQualifier q[]) {
-    (void)vr, (void)n, (void)v, (void)q;
-    return not_supported(c, "fmi3GetIntervalDecimal", NO_CLOCKS);
+    return not_supported(c, "fmi3GetIntervalDecimal", NO_CLOCKS, vr, n, v, q);
 }
 
 fmi3Status fmi3GetIntervalFraction(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                                    fmi3UInt64 v[], fmi3UInt64 r[], fmi3IntervalQualifier q[]) {
-    (void)vr, (void)n, (void)v, (void)r, (void)q;
-    return not_supported(c, "fmi3GetIntervalFraction", NO_CLOCKS);
+    return not_supported(c, "fmi3GetIntervalFraction", NO_CLOCKS, vr, n, v, r, q);
 }
 
 fmi3Status fmi3GetShiftDecimal(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                                fmi3Float64 v[]) {
-    (void)vr, (void)n, (void)v;
-    return not_supported(c, "fmi3GetShiftDecimal", NO_CLOCKS);
+    return not_supported(c, "fmi3GetShiftDecimal", NO_CLOCKS, vr, n, v);
 }
 
 fmi3Status fmi3GetShiftFraction(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                                 fmi3UInt64 v[], fmi3UInt64 r[]) {
-    (void)vr, (void)n, (void)v, (void)r;
-    return not_supported(c, "fmi3GetShiftFraction", NO_CLOCKS);
+    return not_supported(c, "fmi3GetShiftFraction", NO_CLOCKS, vr, n, v, r);
 }
 
 fmi3Status fmi3SetIntervalDecimal(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                                   const fmi3Float64 v[]) {
-    (void)vr, (void)n, (void)v;
-    return not_supported(c, "fmi3SetIntervalDecimal", NO_CLOCKS);
+    return not_supported(c, "fmi3SetIntervalDecimal", NO_CLOCKS, vr, n, v);
 }
 
 fmi3Status fmi3SetIntervalFraction(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                                    const fmi3UInt64 v[], const fmi3UInt64 r[]) {
-    (void)vr, (void)n, (void)v, (void)r;
-    return not_supported(c, "fmi3SetIntervalFraction", NO_CLOCKS);
+    return not_supported(c, "fmi3SetIntervalFraction", NO_CLOCKS, vr, n, v, r);
 }
 
 fmi3Status fmi3SetShiftDecimal(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                                const fmi3Float64 v[]) {
-    (void)vr, (void)n, (void)v;
-    return not_supported(c, "fmi3SetShiftDecimal", NO_CLOCKS);
+    return not_supported(c, "fmi3SetShiftDecimal", NO_CLOCKS, vr, n, v);
 }
 
 fmi3Status fmi3SetShiftFraction(fmi3Instance c, const fmi3ValueReference vr[], size_t n,
                                 const fmi3UInt64 v[], const fmi3UInt64 r[]) {
-    (void)vr, (void)n, (void)v, (void)r;
-    return not_supported(c, "fmi3SetShiftFraction", NO_CLOCKS);
+    return not_supported(c, "fmi3SetShiftFraction", NO_CLOCKS, vr, n, v, r);
 }
 
 fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance c) {
@@ -217,9 +203,8 @@ fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance c) {
 }
 
 fmi3Status fmi3ActivateModelPartition(fmi3Instance c, fmi3ValueReference clock, fmi3Float64 t) {
-    (void)clock, (void)t;
     return not_supported(c, "fmi3ActivateModelPartition",
-                         "this FMU has no ScheduledExecution interface");
+                         "this FMU has no ScheduledExecution interface", clock, t);
 }
 
 static const char NO_STRUCTURAL_PARAMETERS[] =

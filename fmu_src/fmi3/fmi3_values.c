@@ -1,7 +1,5 @@
-/* FMI 3.0 getters and setters, and what the layer tells the runtime of itself (FMI3_LAYER). A
- * value reference names a whole array and nValues counts all their elements. Float64 holds the
- * Real variables and time (read only), Int64 the Enumerations (FMI 3, section 2.4.7.1); no
- * variable has another type (fmi3_unsupported.c). */
+/* FMI 3.0 getters and setters, and FMI3_LAYER. A value reference names a whole array, nValues
+ * counts all elements. Float64 holds the Reals and time (read only), Int64 the Enumerations. */
 #include <stdlib.h>
 
 #include "fmi3_layer.h"
@@ -134,8 +132,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     return fmi3_status(ak_set_values(c, &FMI3_RULES[AK3_SET_FLOAT64], vr, nvr, values, nValues));
 }
 
-/* The call of fmi3GetInt64 or fmi3SetInt64 allowed, its arrays given, every value reference an
- * Enumeration's (a scalar) and nValues one per value reference; else logs the first fault. */
+/* An Enumeration is a scalar: nValues is one per value reference. */
 static bool int64_call_valid(ak_instance *instance, ak3_function function,
                              const fmi3ValueReference vr[], size_t nvr, const void *values,
                              size_t nValues) {

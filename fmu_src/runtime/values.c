@@ -1,6 +1,5 @@
-/* Gets and sets of Real values, one path for both FMI layers, and what an Integer get or set
- * shares with them. A request checked once is kept (ak_kept_request), so that the same request at
- * the next communication point costs one comparison. */
+/* Gets and sets of Real values, one path for both FMI layers. A request checked once is kept, so
+ * that the same request at the next communication point costs one comparison. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -8,8 +7,7 @@
 #include "ak_bytes.h"
 #include "runtime.h"
 
-/* The counts of the goals' gets as constants: a few moves, not a memcpy (gcc made one of 12 a
- * slow rep movs). */
+/* Constant counts: a few moves, not a memcpy (gcc made one of 12 a slow rep movs). */
 static AK_ALWAYS_INLINE void copy_values(double *to, const double *from, size_t n) {
     if (n == 12) {
         for (size_t k = 0; k < 12; k++) {
@@ -112,7 +110,6 @@ static void refuse_real(const ak_instance *instance, const char *function, size_
     }
 }
 
-/* Whether the n values of the layer's calls are the total of vr[]'s. */
 static bool count_matches(const ak_instance *instance, const char *function,
                           const unsigned int vr[], size_t nvr, size_t n, size_t total) {
     return n == total || instance->layer->count_matches == NULL ||
@@ -120,7 +117,6 @@ static bool count_matches(const ak_instance *instance, const char *function,
                                           n, total, vr, nvr);
 }
 
-/* Brings up to date what a get of these roles reads. */
 static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int roles) {
     if (roles & (1u << AK_REAL_DERIVED_OUTPUT)) {
         return ak_instance_update(instance, AK_GROUP_DERIVED);
@@ -137,8 +133,7 @@ static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int
     return AK_STATUS_OK;
 }
 
-/* Whether vr[] names n_values Real values a get can read (the time included); else logs why not.
- * *one_run: the values follow each other. */
+/* Whether vr[] names n_values Real values a get can read; else logs. one_run: consecutive. */
 static bool check_get(const ak_instance *instance, const char *function, const unsigned int vr[],
                       size_t nvr, size_t n_values, unsigned int *roles, bool *one_run) {
     size_t total = 0;
@@ -239,8 +234,7 @@ static bool settable(const ak_instance *instance, const char *function, size_t i
     return false;
 }
 
-/* Whether the values values[k ..] of vr[i] may be stored: finite, and a parameter's in its range
- * and settable now; else logs the first that is not. */
+/* Whether vr[i]'s values from values[k] are finite and, a parameter's, settable; else logs. */
 static bool storable(const ak_instance *instance, const char *function, size_t i,
                      unsigned int vr, const double values[], size_t k) {
     const ak_layer *layer = instance->layer;
@@ -265,9 +259,8 @@ static bool storable(const ak_instance *instance, const char *function, size_t i
     return true;
 }
 
-/* Whether every value of a set may be stored, checked in the order the layer's messages are
- * numbered in: each value reference and its values in turn (FMI 2), or every value reference,
- * then the count, then the values (FMI 3). */
+/* In the order the layer's messages number them: each value reference and its values in turn
+ * (FMI 2), or every value reference, then the count, then the values (FMI 3). */
 static bool check_set(const ak_instance *instance, const char *function, const unsigned int vr[],
                       size_t nvr, const double values[], size_t n_values) {
     const bool counted = instance->layer->count_matches != NULL;
@@ -343,9 +336,8 @@ static AK_NOINLINE ak_status set_checked(ak_instance *instance, const ak_functio
 ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, const double values[],
                         size_t n_values) {
-    /* The set of the last step's inputs again, or of one input array, untraced, no input
-     * derivative to forget: only the values need a check, done as they are stored; if one is not
-     * finite, the full check names it. */
+    /* The last step's inputs again, or one input array, untraced, no input derivative to forget:
+     * the values are checked as they are stored; the full check names one not finite. */
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
     if (ak_call_passes(instance, call) && vr != NULL && values != NULL &&
         !instance->data.any_input_derivative &&
