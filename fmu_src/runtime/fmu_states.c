@@ -97,8 +97,9 @@ static ak_state decoded_state(const ak_layer *layer, uint32_t code, uint32_t int
     return (ak_state)0;
 }
 
-static bool image_intact(const ak_instance *instance, const char *function,
-                         const unsigned char *bytes, size_t size) {
+/* Checks a byte string from its length to its last value; logs why not. */
+static bool valid(const ak_instance *instance, const char *function, const unsigned char *bytes,
+                  size_t size) {
     const ak_state_format *format = &instance->layer->state_format;
     if (size < OFFSET_TOKEN || memcmp(bytes + OFFSET_MAGIC, format->magic, 8) != 0) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: the %zu bytes are not an %s %s (%s)",
@@ -137,15 +138,6 @@ static bool image_intact(const ak_instance *instance, const char *function,
                function, format->token_name, token, AK_MODEL.model_identifier, AK_MODEL.guid);
         return false;
     }
-    return true;
-}
-
-static bool valid(const ak_instance *instance, const char *function, const unsigned char *bytes,
-                  size_t size) {
-    if (!image_intact(instance, function, bytes, size)) {
-        return false;
-    }
-    const ak_state_format *format = &instance->layer->state_format;
     const uint32_t interface = ak_get_u32(bytes + OFFSET_INTERFACE);
     if (interface != image_interface(instance->interface)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
@@ -218,21 +210,30 @@ static ak_fmu_state **known_state(ak_instance *instance, const char *function, c
     return NULL;
 }
 
-/* The state object to fill: the one the importer passes back for reuse, or a new one. */
-static ak_fmu_state *state_to_fill(ak_instance *instance, const char *function, void **state) {
-    if (*state != NULL) {
-        ak_fmu_state **link = known_state(instance, function, *state);
-        return link != NULL ? *link : NULL;
+/* Fills the state the importer passes back for reuse, or a new one: with bytes, or encoded. */
+static ak_status fill_state(ak_instance *instance, const char *function, void **state,
+                            const unsigned char *bytes) {
+    ak_fmu_state *s = *state;
+    if (s != NULL && known_state(instance, function, s) == NULL) {
+        return AK_STATUS_ERROR;
     }
-    ak_fmu_state *s = instance->layer->allocate(instance, sizeof(ak_fmu_state));
     if (s == NULL) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: out of memory allocating an FMU state",
-               function);
-        return NULL;
+        s = instance->layer->allocate(instance, sizeof(ak_fmu_state));
+        if (s == NULL) {
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: out of memory allocating an FMU state", function);
+            return AK_STATUS_ERROR;
+        }
+        s->next = instance->live_states;
+        instance->live_states = s;
     }
-    s->next = instance->live_states;
-    instance->live_states = s;
-    return s;
+    if (bytes != NULL) {
+        memcpy(s->bytes, bytes, state_size(instance));
+    } else {
+        encode(instance, s->bytes);
+    }
+    *state = s;
+    return AK_STATUS_OK;
 }
 
 ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state) {
@@ -240,13 +241,7 @@ ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, 
         !ak_not_null(instance, call->name, state, instance->layer->state_format.kind_argument)) {
         return AK_STATUS_ERROR;
     }
-    ak_fmu_state *s = state_to_fill(instance, call->name, state);
-    if (s == NULL) {
-        return AK_STATUS_ERROR;
-    }
-    encode(instance, s->bytes);
-    *state = s;
-    return AK_STATUS_OK;
+    return fill_state(instance, call->name, state, NULL);
 }
 
 ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state) {
@@ -336,13 +331,7 @@ ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule
         !valid(instance, call->name, bytes, size)) {
         return AK_STATUS_ERROR;
     }
-    ak_fmu_state *s = state_to_fill(instance, call->name, state);
-    if (s == NULL) {
-        return AK_STATUS_ERROR;
-    }
-    memcpy(s->bytes, bytes, state_size(instance));
-    *state = s;
-    return AK_STATUS_OK;
+    return fill_state(instance, call->name, state, bytes);
 }
 
 void ak_free_all_fmu_states(ak_instance *instance) {
