@@ -3,7 +3,6 @@
 
 #include "fmi3_layer.h"
 
-/* The array of vr (list_name[index]) if it has this causality; else NULL after logging why. */
 static const ak3_array *array_of_causality(const ak_instance *instance, const char *function,
                                            const char *list_name, size_t index, unsigned int vr,
                                            ak_causality causality) {
@@ -203,25 +202,21 @@ fmi3Status fmi3GetVariableDependencies(fmi3Instance c, fmi3ValueReference depend
                                        fmi3ValueReference independents[],
                                        size_t elementIndicesOfIndependents[],
                                        fmi3DependencyKind dependencyKinds[],
-                                       size_t nDependencies) {
-    const ak_instance *instance = c;
-    const char *name = fmi3_name(AK3_GET_VARIABLE_DEPENDENCIES);
-    const ak3_array *array =
-        dependent_array(instance, AK3_GET_VARIABLE_DEPENDENCIES, "dependent", dependent);
+                                       size_t nd) {
+    const ak3_function self = AK3_GET_VARIABLE_DEPENDENCIES;
+    const char *name = fmi3_name(self), *n = "nDependencies";
+    const ak3_array *array = dependent_array(c, self, "dependent", dependent);
     if (array == NULL ||
-        !ak_given(instance, name, nDependencies, "nDependencies", elementIndicesOfDependent,
-                  "elementIndicesOfDependent") ||
-        !ak_given(instance, name, nDependencies, "nDependencies", independents, "independents") ||
-        !ak_given(instance, name, nDependencies, "nDependencies", elementIndicesOfIndependents,
-                  "elementIndicesOfIndependents") ||
-        !ak_given(instance, name, nDependencies, "nDependencies", dependencyKinds,
-                  "dependencyKinds")) {
+        !ak_given(c, name, nd, n, elementIndicesOfDependent, "elementIndicesOfDependent") ||
+        !ak_given(c, name, nd, n, independents, "independents") ||
+        !ak_given(c, name, nd, n, elementIndicesOfIndependents, "elementIndicesOfIndependents") ||
+        !ak_given(c, name, nd, n, dependencyKinds, "dependencyKinds")) {
         return fmi3Error;
     }
-    if (nDependencies != dependency_count(array)) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+    if (nd != dependency_count(array)) {
+        ak_log(c, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: nDependencies = %zu, but %s has %zu (fmi3GetNumberOfVariableDependencies)",
-               name, nDependencies, array->name, dependency_count(array));
+               name, nd, array->name, dependency_count(array));
         return fmi3Error;
     }
     size_t k = 0;

@@ -95,7 +95,6 @@ static inline fmi3Status fmi3_status(ak_status status) {
     return (fmi3Status)status;
 }
 
-/* True when n, the caller's count of values, is the total of the n_vr arrays; else logs. */
 bool ak3_count_matches(const ak_instance *instance, const char *function, const char *count_name,
                        size_t n, size_t total, const unsigned int vr[], size_t n_vr);
 

@@ -13,7 +13,6 @@ enum {
                AK_CONTINUOUS_TIME_MODE,
     DERIVABLE = AK_INITIALIZATION_MODE | AK_EVENT_MODE | AK_STEP_MODE | AK_CONTINUOUS_TIME_MODE |
                 AK_TERMINATED,
-    /* Model exchange's states, derivatives, nominals and event indicators. */
     ME_READABLE = AK_INITIALIZATION_MODE | AK_EVENT_MODE | AK_CONTINUOUS_TIME_MODE | AK_TERMINATED
 };
 

@@ -4,7 +4,6 @@
 
 #include "fmi3_layer.h"
 
-/* The array of a value reference whose variable has the function's type; NULL after logging. */
 static const ak3_array *array_of_type(const ak_instance *instance, const char *function,
                                       size_t index, unsigned int vr, ak_type type) {
     const ak3_array *array = ak3_array_of(vr);
@@ -53,10 +52,6 @@ static unsigned int elements_at(unsigned int vr) {
     return array != NULL ? array->n_elements : 0u;
 }
 
-static const char *name_of(unsigned int vr) {
-    return AK3_ARRAYS[vr].name;
-}
-
 static void refuse_real(const ak_instance *instance, const char *function, size_t index,
                         unsigned int vr, bool set) {
     if (set && vr == AK3_TIME_VALUE_REFERENCE) {
@@ -101,7 +96,6 @@ const ak_layer FMI3_LAYER = {
     .state_setter_note = " and a continuous state (fmi3SetContinuousStates sets states in model "
                          "exchange)",
     .step_discarded_state = AK_STEP_MODE, /* FMI 3 has no StepFailed state */
-    /* Magic "AKinFMU3", distinct from FMI 2's "AKinFMUs"; no input derivatives in FMI 3. */
     .state_format = {"AKinFMU3", 1u, "FMI 3 FMU state", "instantiationToken", "interface",
                      "FMUState", "fmi3GetFMUState", "fmi3DeserializeFMUState",
                      "fmi3SerializedFMUStateSize", false},
@@ -114,7 +108,7 @@ const ak_layer FMI3_LAYER = {
     .elements_at = elements_at,
     .time_vr = &AK3_TIME_VALUE_REFERENCE,
     .refuse_real = refuse_real,
-    .name_of = name_of,
+    .name_of = name_of_vr,
     .count_matches = ak3_count_matches,
     .errors_always_logged = true,
     .send = send,

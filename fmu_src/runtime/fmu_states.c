@@ -79,13 +79,6 @@ static void encode(const ak_instance *instance, unsigned char bytes[MAX_SIZE]) {
     ak_put_u32(bytes + offset_checksum(instance), ak_crc32(bytes, offset_checksum(instance)));
 }
 
-static const char *interface_words(uint32_t interface, bool adjective) {
-    if (interface == 0) {
-        return adjective ? "model-exchange" : "model exchange";
-    }
-    return interface == 1 ? "co-simulation" : "unknown";
-}
-
 /* The state of an image's state field that an instance of its interface can be in, or 0. */
 static ak_state decoded_state(const ak_layer *layer, uint32_t code, uint32_t interface) {
     for (int bit = 0; bit < AK_N_STATES; bit++) {
@@ -97,7 +90,6 @@ static ak_state decoded_state(const ak_layer *layer, uint32_t code, uint32_t int
     return (ak_state)0;
 }
 
-/* Checks a byte string from its length to its last value; logs why not. */
 static bool valid(const ak_instance *instance, const char *function, const unsigned char *bytes,
                   size_t size) {
     const ak_state_format *format = &instance->layer->state_format;
@@ -142,8 +134,12 @@ static bool valid(const ak_instance *instance, const char *function, const unsig
     if (interface != image_interface(instance->interface)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: the FMU state is of a %s instance (%s %u); this instance is for %s",
-               function, interface_words(interface, true), format->interface_name, interface,
-               interface_words(image_interface(instance->interface), false));
+               function,
+               interface == 0   ? "model-exchange"
+               : interface == 1 ? "co-simulation"
+                                : "unknown",
+               format->interface_name, interface,
+               instance->interface == AK_MODEL_EXCHANGE ? "model exchange" : "co-simulation");
         return false;
     }
     const uint32_t state = ak_get_u32(bytes + OFFSET_STATE);

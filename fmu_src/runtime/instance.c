@@ -84,19 +84,13 @@ static ak_real_role real_role(const ak_variable *variable) {
     if (variable == NULL || variable->type != AK_TYPE_REAL) {
         return AK_REAL_ABSENT;
     }
-    if (variable->causality == AK_CAUSALITY_INPUT) {
-        return AK_REAL_INPUT;
-    }
-    if (variable->causality == AK_CAUSALITY_PARAMETER) {
-        return AK_REAL_PARAMETER;
-    }
-    if (variable->causality == AK_CAUSALITY_OUTPUT &&
-        ak_state_index(AK_MODEL.state_vrs, variable->value_reference) >= 0) {
-        return AK_REAL_STATE_OUTPUT;
-    }
-    return variable->group == AK_GROUP_DERIVED ? AK_REAL_DERIVED_OUTPUT
-           : variable->group == AK_GROUP_LAZY  ? AK_REAL_LAZY_OUTPUT
-                                               : AK_REAL_MAIN_OUTPUT;
+    const bool state = ak_state_index(AK_MODEL.state_vrs, variable->value_reference) >= 0;
+    return variable->causality == AK_CAUSALITY_INPUT                ? AK_REAL_INPUT
+           : variable->causality == AK_CAUSALITY_PARAMETER          ? AK_REAL_PARAMETER
+           : variable->causality == AK_CAUSALITY_OUTPUT && state    ? AK_REAL_STATE_OUTPUT
+           : variable->group == AK_GROUP_DERIVED                    ? AK_REAL_DERIVED_OUTPUT
+           : variable->group == AK_GROUP_LAZY                       ? AK_REAL_LAZY_OUTPUT
+                                                                    : AK_REAL_MAIN_OUTPUT;
 }
 
 void ak_instance_reset(ak_instance *instance) {

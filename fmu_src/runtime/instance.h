@@ -55,7 +55,6 @@ typedef struct {
     const char *state_names[AK_N_STATES]; /* by bit index, in the standard's words */
     /* Why a function of the other interface is refused: [0] model exchange, [1] co-simulation. */
     const char *other_interface[2];
-    /* The names of the arguments in messages. */
     const char *vr_name;
     const char *vr_count_name;
     const char *values_name;
@@ -69,7 +68,6 @@ typedef struct {
     unsigned int (*elements_at)(unsigned int vr);
     /* The independent variable's value reference, readable as a Real value; NULL: none. */
     const unsigned int *time_vr;
-    /* Logs why vr (vr_name[index]) names no Real value a get, or a set, can read or write. */
     void (*refuse_real)(const ak_instance *instance, const char *function, size_t index,
                         unsigned int vr, bool set);
     /* The name of vr in messages (FMI 3: its array's); NULL: the variable's. */
@@ -187,7 +185,6 @@ static inline bool ak_not_null(const ak_instance *instance, const char *function
                                const void *pointer, const char *name) {
     return pointer != NULL || ak_refuse_null(instance, function, 0, NULL, name);
 }
-/* The call allowed, and vr and values given if there is anything to read or write. */
 static AK_ALWAYS_INLINE bool ak_values_call_valid(const ak_instance *instance,
                                                   const ak_function_rule *call,
                                                   const unsigned int vr[], size_t nvr,
@@ -203,7 +200,6 @@ static AK_ALWAYS_INLINE bool ak_values_call_valid(const ak_instance *instance,
 bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char *function,
                        const char *name, ak_interface interface, bool has_logger, bool logging_on);
 
-/* The instance as just instantiated (instantiation and reset). */
 void ak_instance_reset(ak_instance *instance);
 
 static inline ak_real_role ak_real_role_of(const ak_instance *instance, unsigned int vr) {

@@ -38,10 +38,6 @@ void ak_input_derivatives_changed(ak_instance *instance) {
     }
 }
 
-static const char *type_name(ak_type type) {
-    return type == AK_TYPE_INTEGER ? "Integer" : "Real";
-}
-
 const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
                                        unsigned int vr, size_t index, ak_type type) {
     const ak_variable *variable = ak_variable_of(vr);
@@ -54,7 +50,8 @@ const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *
     if (variable->type != type) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: %s[%zu] = %u is %s, of type %s, not %s", function, instance->layer->vr_name,
-               index, vr, variable->name, type_name(variable->type), type_name(type));
+               index, vr, variable->name, variable->type == AK_TYPE_INTEGER ? "Integer" : "Real",
+               type == AK_TYPE_INTEGER ? "Integer" : "Real");
         return NULL;
     }
     return variable;
@@ -100,7 +97,6 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
     }
 }
 
-/* Logs why vr (vr_name[i]) names no Real value to get or set: the layer's words, or FMI 2's. */
 static void refuse_real(const ak_instance *instance, const char *function, size_t i,
                         unsigned int vr, bool set) {
     if (instance->layer->refuse_real != NULL) {
@@ -133,7 +129,6 @@ static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int
     return AK_STATUS_OK;
 }
 
-/* Whether vr[] names n_values Real values a get can read; else logs. one_run: consecutive. */
 static bool check_get(const ak_instance *instance, const char *function, const unsigned int vr[],
                       size_t nvr, size_t n_values, unsigned int *roles, bool *one_run) {
     size_t total = 0;
@@ -212,7 +207,6 @@ static AK_NOINLINE ak_status get_checked(ak_instance *instance, const ak_functio
     return read_values(instance, roles, one_run, vr, nvr, values, n_values);
 }
 
-/* Whether vr[i] names values a set may write (inputs or parameters); else logs why not. */
 static bool settable(const ak_instance *instance, const char *function, size_t i,
                      unsigned int vr) {
     const ak_real_role role = ak_real_role_of(instance, vr);
@@ -234,7 +228,6 @@ static bool settable(const ak_instance *instance, const char *function, size_t i
     return false;
 }
 
-/* Whether vr[i]'s values from values[k] are finite and, a parameter's, settable; else logs. */
 static bool storable(const ak_instance *instance, const char *function, size_t i,
                      unsigned int vr, const double values[], size_t k) {
     const ak_layer *layer = instance->layer;
@@ -298,8 +291,7 @@ ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
     return get_checked(instance, call, vr, nvr, values, n_values);
 }
 
-/* Stores n finite values of consecutive inputs from first, or nothing (false) if one is not
- * finite. The goals' counts as constants, so that the compiler unrolls (docs/performance.md). */
+/* All or nothing (false: one is not finite); constant counts, so that the compiler unrolls. */
 static AK_ALWAYS_INLINE bool store_inputs(ak_instance *instance, unsigned int first,
                                           const double values[], size_t n) {
     double *target = &instance->data.values[first];
