@@ -90,12 +90,12 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance c, const fmi3ValueReference vr[
     return fmi3_status(ak_output_derivatives(c, self, elements, n, values));
 }
 
-static fmi3Status derivative(fmi3Instance c, bool adjoint, const fmi3ValueReference unknowns[],
-                             size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
+static fmi3Status derivative(fmi3Instance c, ak3_function function,
+                             const fmi3ValueReference unknowns[], size_t nUnknowns,
+                             const fmi3ValueReference knowns[], size_t nKnowns,
                              const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
                              size_t nSensitivity) {
-    const ak3_function function =
-        adjoint ? AK3_GET_ADJOINT_DERIVATIVE : AK3_GET_DIRECTIONAL_DERIVATIVE;
+    const bool adjoint = function == AK3_GET_ADJOINT_DERIVATIVE;
     const char *self = fmi3_name(function);
     if (!fmi3_allowed(c, function)) {
         return fmi3Error;
@@ -144,16 +144,16 @@ fmi3Status fmi3GetDirectionalDerivative(fmi3Instance c, const fmi3ValueReference
                                         size_t nUnknowns, const fmi3ValueReference knowns[],
                                         size_t nKnowns, const fmi3Float64 seed[], size_t nSeed,
                                         fmi3Float64 sensitivity[], size_t nSensitivity) {
-    return derivative(c, false, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
-                      nSensitivity);
+    return derivative(c, AK3_GET_DIRECTIONAL_DERIVATIVE, unknowns, nUnknowns, knowns, nKnowns,
+                      seed, nSeed, sensitivity, nSensitivity);
 }
 
 fmi3Status fmi3GetAdjointDerivative(fmi3Instance c, const fmi3ValueReference unknowns[],
                                     size_t nUnknowns, const fmi3ValueReference knowns[],
                                     size_t nKnowns, const fmi3Float64 seed[], size_t nSeed,
                                     fmi3Float64 sensitivity[], size_t nSensitivity) {
-    return derivative(c, true, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
-                      nSensitivity);
+    return derivative(c, AK3_GET_ADJOINT_DERIVATIVE, unknowns, nUnknowns, knowns, nKnowns, seed,
+                      nSeed, sensitivity, nSensitivity);
 }
 
 /* The variable table lists the inputs only, so a model with states does not provide them. */

@@ -20,7 +20,6 @@ ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
 ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, const double values[],
                         size_t n_values);
-/* The variable of a scalar value reference, of the given type, or NULL after logging why not. */
 const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
                                        unsigned int vr, size_t index, ak_type type);
 /* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
@@ -93,7 +92,6 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *
                                  unsigned char bytes[], size_t size);
 ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
                                    const unsigned char bytes[], size_t size, void **state);
-/* Frees the FMU states the importer did not free. */
 void ak_free_all_fmu_states(ak_instance *instance);
 
 /* --- life cycle (lifecycle.c) ------------------------------------------------------------------ */
