@@ -166,10 +166,9 @@ fmi3Status fmi3SerializedFMUStateSize(fmi3Instance c, fmi3FMUState FMUState, siz
                                                     FMUState, size));
 }
 
-fmi3Status fmi3SerializeFMUState(fmi3Instance c, fmi3FMUState FMUState, fmi3Byte serializedState[],
-                                 size_t size) {
-    return fmi3_status(ak_serialize_fmu_state(c, &FMI3_RULES[AK3_SERIALIZE_FMU_STATE], FMUState,
-                                              serializedState, size));
+fmi3Status fmi3SerializeFMUState(fmi3Instance c, fmi3FMUState s, fmi3Byte bytes[], size_t size) {
+    return fmi3_status(ak_serialize_fmu_state(c, &FMI3_RULES[AK3_SERIALIZE_FMU_STATE], s, bytes,
+                                              size));
 }
 
 fmi3Status fmi3DeserializeFMUState(fmi3Instance c, const fmi3Byte serializedState[], size_t size,
