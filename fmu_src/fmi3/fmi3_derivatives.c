@@ -1,10 +1,8 @@
-/* FMI 3.0 output, directional and adjoint derivatives over runtime/derivatives.c, and the
- * per-element dependencies: this file checks the arguments and expands arrays into elements. */
+/* FMI 3.0 derivatives and dependencies: the arguments checked, arrays expanded into elements. */
 #include <math.h>
 
 #include "fmi3_layer.h"
 
-/* The array of vr (list_name[index]) if it has this causality; else NULL after logging why. */
 static const ak3_array *array_of_causality(const ak_instance *instance, const char *function,
                                            const char *list_name, size_t index, unsigned int vr,
                                            ak_causality causality) {
@@ -26,11 +24,9 @@ static const ak3_array *array_of_causality(const ak_instance *instance, const ch
     return array;
 }
 
-/* The highest order fmi3GetOutputDerivatives gives: maxOutputDerivativeOrder. */
 enum { MAX_OUTPUT_DERIVATIVE_ORDER = 1 };
 
-/* Checks a list of value references of one causality and expands it into its *n_elements
- * elements. also: arrays accepted besides (the states or their derivatives), or NULL. */
+/* Expands checked value references into elements; also: other arrays accepted, or NULL. */
 static bool arrays_valid(const ak_instance *instance, const char *function, const char *list_name,
                          const unsigned int vr[], size_t n, ak_causality causality,
                          const unsigned int *also, unsigned int elements[], size_t *n_elements) {
@@ -94,14 +90,12 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance c, const fmi3ValueReference vr[
     return fmi3_status(ak_output_derivatives(c, self, elements, n, values));
 }
 
-/* sensitivity = J seed (directional) or J^T seed (adjoint), J the rows of the unknowns'
- * elements and the columns of the knowns' elements. */
-static fmi3Status derivative(fmi3Instance c, bool adjoint, const fmi3ValueReference unknowns[],
-                             size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
+static fmi3Status derivative(fmi3Instance c, ak3_function function,
+                             const fmi3ValueReference unknowns[], size_t nUnknowns,
+                             const fmi3ValueReference knowns[], size_t nKnowns,
                              const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
                              size_t nSensitivity) {
-    const ak3_function function =
-        adjoint ? AK3_GET_ADJOINT_DERIVATIVE : AK3_GET_DIRECTIONAL_DERIVATIVE;
+    const bool adjoint = function == AK3_GET_ADJOINT_DERIVATIVE;
     const char *self = fmi3_name(function);
     if (!fmi3_allowed(c, function)) {
         return fmi3Error;
@@ -150,20 +144,19 @@ fmi3Status fmi3GetDirectionalDerivative(fmi3Instance c, const fmi3ValueReference
                                         size_t nUnknowns, const fmi3ValueReference knowns[],
                                         size_t nKnowns, const fmi3Float64 seed[], size_t nSeed,
                                         fmi3Float64 sensitivity[], size_t nSensitivity) {
-    return derivative(c, false, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
-                      nSensitivity);
+    return derivative(c, AK3_GET_DIRECTIONAL_DERIVATIVE, unknowns, nUnknowns, knowns, nKnowns,
+                      seed, nSeed, sensitivity, nSensitivity);
 }
 
 fmi3Status fmi3GetAdjointDerivative(fmi3Instance c, const fmi3ValueReference unknowns[],
                                     size_t nUnknowns, const fmi3ValueReference knowns[],
                                     size_t nKnowns, const fmi3Float64 seed[], size_t nSeed,
                                     fmi3Float64 sensitivity[], size_t nSensitivity) {
-    return derivative(c, true, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
-                      nSensitivity);
+    return derivative(c, AK3_GET_ADJOINT_DERIVATIVE, unknowns, nUnknowns, knowns, nKnowns, seed,
+                      nSeed, sensitivity, nSensitivity);
 }
 
-/* Per-element dependencies (FMI 3, section 2.2.10). The variable table lists the inputs only, so
- * a model with states does not provide them. The output array asked for; NULL after logging. */
+/* The variable table lists the inputs only, so a model with states does not provide them. */
 static const ak3_array *dependent_array(const ak_instance *instance, ak3_function function,
                                         const char *list_name, unsigned int vr) {
     if (!fmi3_allowed(instance, function)) {
@@ -209,25 +202,21 @@ fmi3Status fmi3GetVariableDependencies(fmi3Instance c, fmi3ValueReference depend
                                        fmi3ValueReference independents[],
                                        size_t elementIndicesOfIndependents[],
                                        fmi3DependencyKind dependencyKinds[],
-                                       size_t nDependencies) {
-    const ak_instance *instance = c;
-    const char *name = fmi3_name(AK3_GET_VARIABLE_DEPENDENCIES);
-    const ak3_array *array =
-        dependent_array(instance, AK3_GET_VARIABLE_DEPENDENCIES, "dependent", dependent);
+                                       size_t nd) {
+    const ak3_function self = AK3_GET_VARIABLE_DEPENDENCIES;
+    const char *name = fmi3_name(self), *n = "nDependencies";
+    const ak3_array *array = dependent_array(c, self, "dependent", dependent);
     if (array == NULL ||
-        !ak_given(instance, name, nDependencies, "nDependencies", elementIndicesOfDependent,
-                  "elementIndicesOfDependent") ||
-        !ak_given(instance, name, nDependencies, "nDependencies", independents, "independents") ||
-        !ak_given(instance, name, nDependencies, "nDependencies", elementIndicesOfIndependents,
-                  "elementIndicesOfIndependents") ||
-        !ak_given(instance, name, nDependencies, "nDependencies", dependencyKinds,
-                  "dependencyKinds")) {
+        !ak_given(c, name, nd, n, elementIndicesOfDependent, "elementIndicesOfDependent") ||
+        !ak_given(c, name, nd, n, independents, "independents") ||
+        !ak_given(c, name, nd, n, elementIndicesOfIndependents, "elementIndicesOfIndependents") ||
+        !ak_given(c, name, nd, n, dependencyKinds, "dependencyKinds")) {
         return fmi3Error;
     }
-    if (nDependencies != dependency_count(array)) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+    if (nd != dependency_count(array)) {
+        ak_log(c, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: nDependencies = %zu, but %s has %zu (fmi3GetNumberOfVariableDependencies)",
-               name, nDependencies, array->name, dependency_count(array));
+               name, nd, array->name, dependency_count(array));
         return fmi3Error;
     }
     size_t k = 0;

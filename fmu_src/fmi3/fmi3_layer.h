@@ -1,22 +1,19 @@
-/* The FMI 3.0 layer: the FMI 3 entry points over the runtime (runtime/runtime.h). It knows no
- * model's variables, only AK_MODEL and the model's generated array table. */
+/* The FMI 3.0 layer over the runtime: it knows AK_MODEL and the array table, no variable. */
 #ifndef ANGULAR_KINEMATICS_FMI3_LAYER_H
 #define ANGULAR_KINEMATICS_FMI3_LAYER_H
 
 #include "fmi3Functions.h"
 #include "runtime.h"
 
-/* An FMI 3 array (theta, R, ...) is one variable whose value reference is that of its first
- * element: values[vr .. vr + n_elements - 1] are its elements, row-major. */
+/* An FMI 3 array is one variable, named by its first element's value reference; row-major. */
 typedef struct {
     const char *name;       /* NULL: no variable has this value reference */
-    unsigned int first_vr;  /* the FMI 3 value reference of the array */
+    unsigned int first_vr;
     unsigned int n_elements;
     unsigned int n_dimensions; /* 0 scalar, 1 vector, 2 matrix */
 } ak3_array;
 
-/* Generated per model (models/<Model>/fmi3/<Model>_fmi3_arrays.c): for every value reference of
- * the value array, the array holding it. */
+/* Generated per model: the array holding each value reference. */
 extern const ak3_array AK3_ARRAYS[AK_MAX_VARIABLES];
 /* Time is not in the value array: it is answered from the instance's time. */
 extern const unsigned int AK3_TIME_VALUE_REFERENCE;
@@ -38,32 +35,10 @@ typedef enum {
     AK3_ENTER_EVENT_MODE,
     AK3_TERMINATE,
     AK3_RESET,
-    AK3_GET_FLOAT32,
     AK3_GET_FLOAT64,
-    AK3_GET_INT8,
-    AK3_GET_UINT8,
-    AK3_GET_INT16,
-    AK3_GET_UINT16,
-    AK3_GET_INT32,
-    AK3_GET_UINT32,
     AK3_GET_INT64,
-    AK3_GET_UINT64,
-    AK3_GET_BOOLEAN,
-    AK3_GET_STRING,
-    AK3_GET_BINARY,
-    AK3_SET_FLOAT32,
     AK3_SET_FLOAT64,
-    AK3_SET_INT8,
-    AK3_SET_UINT8,
-    AK3_SET_INT16,
-    AK3_SET_UINT16,
-    AK3_SET_INT32,
-    AK3_SET_UINT32,
     AK3_SET_INT64,
-    AK3_SET_UINT64,
-    AK3_SET_BOOLEAN,
-    AK3_SET_STRING,
-    AK3_SET_BINARY,
     AK3_GET_NUMBER_OF_VARIABLE_DEPENDENCIES,
     AK3_GET_VARIABLE_DEPENDENCIES,
     AK3_GET_FMU_STATE,
@@ -91,7 +66,6 @@ typedef enum {
     AK3_N_FUNCTIONS
 } ak3_function;
 
-/* The allowed states and interfaces of every FMI 3 function taking an instance. */
 extern const ak_function_rule FMI3_RULES[AK3_N_FUNCTIONS];
 extern const ak_layer FMI3_LAYER;
 
@@ -121,8 +95,6 @@ static inline fmi3Status fmi3_status(ak_status status) {
     return (fmi3Status)status;
 }
 
-/* True when n, the caller's count of values, is the number of elements of the n_vr arrays
- * (total); else logs naming the function, the count and the variables. */
 bool ak3_count_matches(const ak_instance *instance, const char *function, const char *count_name,
                        size_t n, size_t total, const unsigned int vr[], size_t n_vr);
 

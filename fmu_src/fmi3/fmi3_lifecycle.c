@@ -17,7 +17,6 @@ static void send_unborn(const void *context, const char *message) {
     }
 }
 
-/* The checks and the allocation common to both interfaces; NULL after logging why. */
 static fmi3_instance *instantiate(const char *function, fmi3String instanceName,
                                   fmi3String instantiationToken, fmi3Boolean loggingOn,
                                   const fmi3_logger *who, ak_interface interface) {
@@ -167,10 +166,9 @@ fmi3Status fmi3SerializedFMUStateSize(fmi3Instance c, fmi3FMUState FMUState, siz
                                                     FMUState, size));
 }
 
-fmi3Status fmi3SerializeFMUState(fmi3Instance c, fmi3FMUState FMUState, fmi3Byte serializedState[],
-                                 size_t size) {
-    return fmi3_status(ak_serialize_fmu_state(c, &FMI3_RULES[AK3_SERIALIZE_FMU_STATE], FMUState,
-                                              serializedState, size));
+fmi3Status fmi3SerializeFMUState(fmi3Instance c, fmi3FMUState s, fmi3Byte bytes[], size_t size) {
+    return fmi3_status(ak_serialize_fmu_state(c, &FMI3_RULES[AK3_SERIALIZE_FMU_STATE], s, bytes,
+                                              size));
 }
 
 fmi3Status fmi3DeserializeFMUState(fmi3Instance c, const fmi3Byte serializedState[], size_t size,

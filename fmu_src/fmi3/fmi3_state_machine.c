@@ -1,13 +1,11 @@
-/* The allowed-state table of FMI 3.0 (fmi-standard's docs/2_3_common_states.adoc, 3_2 and 4_2).
- * Co-simulation instances never use Event Mode (fmi3InstantiateCoSimulation refuses
- * eventModeUsed), and no instance enters Configuration or Reconfiguration Mode (no structural
- * parameters). */
+/* The allowed-state table of FMI 3.0. Co-simulation instances never use Event Mode, and no
+ * instance enters Configuration or Reconfiguration Mode (no structural parameters). */
 #include "fmi3_layer.h"
 
 enum {
     ANY_STATE = AK_INSTANTIATED | AK_CONFIGURATION_MODE | AK_INITIALIZATION_MODE | AK_EVENT_MODE |
                 AK_STEP_MODE | AK_CONTINUOUS_TIME_MODE | AK_RECONFIGURATION_MODE | AK_TERMINATED,
-    /* In Instantiated, the start values or what was set since (2_3, State: Instantiated). */
+    /* In Instantiated, the start values or what was set since. */
     READABLE = AK_INSTANTIATED | AK_INITIALIZATION_MODE | AK_EVENT_MODE | AK_STEP_MODE |
                AK_CONTINUOUS_TIME_MODE | AK_TERMINATED,
     /* Parameters in Instantiated and Initialization Mode, the (continuous) inputs also after. */
@@ -15,7 +13,6 @@ enum {
                AK_CONTINUOUS_TIME_MODE,
     DERIVABLE = AK_INITIALIZATION_MODE | AK_EVENT_MODE | AK_STEP_MODE | AK_CONTINUOUS_TIME_MODE |
                 AK_TERMINATED,
-    /* Model exchange's states, derivatives, nominals and event indicators (2_3). */
     ME_READABLE = AK_INITIALIZATION_MODE | AK_EVENT_MODE | AK_CONTINUOUS_TIME_MODE | AK_TERMINATED
 };
 
@@ -30,32 +27,10 @@ const ak_function_rule FMI3_RULES[AK3_N_FUNCTIONS] = {
     [AK3_TERMINATE] = {"fmi3Terminate", AK_EVENT_MODE | AK_STEP_MODE | AK_CONTINUOUS_TIME_MODE,
                        BOTH},
     [AK3_RESET] = {"fmi3Reset", ANY_STATE, BOTH},
-    [AK3_GET_FLOAT32] = {"fmi3GetFloat32", READABLE, BOTH},
     [AK3_GET_FLOAT64] = {"fmi3GetFloat64", READABLE, BOTH},
-    [AK3_GET_INT8] = {"fmi3GetInt8", READABLE, BOTH},
-    [AK3_GET_UINT8] = {"fmi3GetUInt8", READABLE, BOTH},
-    [AK3_GET_INT16] = {"fmi3GetInt16", READABLE, BOTH},
-    [AK3_GET_UINT16] = {"fmi3GetUInt16", READABLE, BOTH},
-    [AK3_GET_INT32] = {"fmi3GetInt32", READABLE, BOTH},
-    [AK3_GET_UINT32] = {"fmi3GetUInt32", READABLE, BOTH},
     [AK3_GET_INT64] = {"fmi3GetInt64", READABLE, BOTH},
-    [AK3_GET_UINT64] = {"fmi3GetUInt64", READABLE, BOTH},
-    [AK3_GET_BOOLEAN] = {"fmi3GetBoolean", READABLE, BOTH},
-    [AK3_GET_STRING] = {"fmi3GetString", READABLE, BOTH},
-    [AK3_GET_BINARY] = {"fmi3GetBinary", READABLE, BOTH},
-    [AK3_SET_FLOAT32] = {"fmi3SetFloat32", WRITABLE, BOTH},
     [AK3_SET_FLOAT64] = {"fmi3SetFloat64", WRITABLE, BOTH},
-    [AK3_SET_INT8] = {"fmi3SetInt8", WRITABLE, BOTH},
-    [AK3_SET_UINT8] = {"fmi3SetUInt8", WRITABLE, BOTH},
-    [AK3_SET_INT16] = {"fmi3SetInt16", WRITABLE, BOTH},
-    [AK3_SET_UINT16] = {"fmi3SetUInt16", WRITABLE, BOTH},
-    [AK3_SET_INT32] = {"fmi3SetInt32", WRITABLE, BOTH},
-    [AK3_SET_UINT32] = {"fmi3SetUInt32", WRITABLE, BOTH},
     [AK3_SET_INT64] = {"fmi3SetInt64", WRITABLE, BOTH},
-    [AK3_SET_UINT64] = {"fmi3SetUInt64", WRITABLE, BOTH},
-    [AK3_SET_BOOLEAN] = {"fmi3SetBoolean", WRITABLE, BOTH},
-    [AK3_SET_STRING] = {"fmi3SetString", WRITABLE, BOTH},
-    [AK3_SET_BINARY] = {"fmi3SetBinary", WRITABLE, BOTH},
     [AK3_GET_NUMBER_OF_VARIABLE_DEPENDENCIES] = {"fmi3GetNumberOfVariableDependencies", ANY_STATE,
                                                  BOTH},
     [AK3_GET_VARIABLE_DEPENDENCIES] = {"fmi3GetVariableDependencies", ANY_STATE, BOTH},
@@ -70,7 +45,7 @@ const ak_function_rule FMI3_RULES[AK3_N_FUNCTIONS] = {
     [AK3_UPDATE_DISCRETE_STATES] = {"fmi3UpdateDiscreteStates", AK_EVENT_MODE, ME},
     [AK3_ENTER_CONTINUOUS_TIME_MODE] = {"fmi3EnterContinuousTimeMode", AK_EVENT_MODE, ME},
     [AK3_COMPLETED_INTEGRATOR_STEP] = {"fmi3CompletedIntegratorStep", AK_CONTINUOUS_TIME_MODE, ME},
-    /* In Event Mode time advances only through fmi3UpdateDiscreteStates (3_2). */
+    /* In Event Mode time advances only through fmi3UpdateDiscreteStates. */
     [AK3_SET_TIME] = {"fmi3SetTime", AK_CONTINUOUS_TIME_MODE, ME},
     [AK3_SET_CONTINUOUS_STATES] = {"fmi3SetContinuousStates", AK_CONTINUOUS_TIME_MODE, ME},
     [AK3_GET_CONTINUOUS_STATE_DERIVATIVES] = {"fmi3GetContinuousStateDerivatives", ME_READABLE,

@@ -1,6 +1,5 @@
-/* FMI 3.0 time: co-simulation's step (runtime/stepping.c) and model exchange's continuous states
- * (runtime/continuous.c). FMI 3 gives no input derivatives: a step holds the inputs. The models
- * have no event indicators, so no event ever happens. */
+/* FMI 3.0 time: the step and the continuous states. FMI 3 has no input derivatives: a step holds
+ * the inputs. The models have no event indicators, so no event ever happens. */
 #include "fmi3_layer.h"
 
 fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 currentCommunicationPoint,
@@ -75,11 +74,9 @@ fmi3Status fmi3SetTime(fmi3Instance c, fmi3Float64 time) {
     return fmi3_status(ak_set_time(c, &FMI3_RULES[AK3_SET_TIME], time));
 }
 
-fmi3Status fmi3SetContinuousStates(fmi3Instance c, const fmi3Float64 continuousStates[],
-                                   size_t nContinuousStates) {
+fmi3Status fmi3SetContinuousStates(fmi3Instance c, const fmi3Float64 x[], size_t nx) {
     return fmi3_status(ak_set_continuous_states(c, &FMI3_RULES[AK3_SET_CONTINUOUS_STATES],
-                                                "nContinuousStates", "continuousStates",
-                                                continuousStates, nContinuousStates));
+                                                "nContinuousStates", "continuousStates", x, nx));
 }
 
 fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance c, fmi3Float64 derivatives[],
@@ -89,18 +86,14 @@ fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance c, fmi3Float64 derivat
                                                 derivatives, nContinuousStates));
 }
 
-fmi3Status fmi3GetContinuousStates(fmi3Instance c, fmi3Float64 continuousStates[],
-                                   size_t nContinuousStates) {
+fmi3Status fmi3GetContinuousStates(fmi3Instance c, fmi3Float64 x[], size_t nx) {
     return fmi3_status(ak_get_continuous_states(c, &FMI3_RULES[AK3_GET_CONTINUOUS_STATES],
-                                                "nContinuousStates", "continuousStates",
-                                                continuousStates, nContinuousStates));
+                                                "nContinuousStates", "continuousStates", x, nx));
 }
 
-fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance c, fmi3Float64 nominals[],
-                                             size_t nContinuousStates) {
+fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance c, fmi3Float64 nominals[], size_t nx) {
     return fmi3_status(ak_get_nominals(c, &FMI3_RULES[AK3_GET_NOMINALS_OF_CONTINUOUS_STATES],
-                                       "nContinuousStates", "nominals", nominals,
-                                       nContinuousStates));
+                                       "nContinuousStates", "nominals", nominals, nx));
 }
 
 fmi3Status fmi3GetEventIndicators(fmi3Instance c, fmi3Float64 eventIndicators[],

@@ -1,12 +1,9 @@
-/* FMI 3.0 getters and setters, and what the layer tells the runtime of itself (FMI3_LAYER). A
- * value reference names a whole array and nValues counts all their elements. Float64 holds the
- * Real variables and time (read only), Int64 the Enumerations (FMI 3, section 2.4.7.1); no
- * variable has another type (fmi3_unsupported.c). */
+/* FMI 3.0 getters and setters, and FMI3_LAYER. A value reference names a whole array, nValues
+ * counts all elements. Float64 holds the Reals and time (read only), Int64 the Enumerations. */
 #include <stdlib.h>
 
 #include "fmi3_layer.h"
 
-/* The array of a value reference whose variable has the function's type; NULL after logging. */
 static const ak3_array *array_of_type(const ak_instance *instance, const char *function,
                                       size_t index, unsigned int vr, ak_type type) {
     const ak3_array *array = ak3_array_of(vr);
@@ -55,10 +52,6 @@ static unsigned int elements_at(unsigned int vr) {
     return array != NULL ? array->n_elements : 0u;
 }
 
-static const char *name_of(unsigned int vr) {
-    return AK3_ARRAYS[vr].name;
-}
-
 static void refuse_real(const ak_instance *instance, const char *function, size_t index,
                         unsigned int vr, bool set) {
     if (set && vr == AK3_TIME_VALUE_REFERENCE) {
@@ -103,7 +96,6 @@ const ak_layer FMI3_LAYER = {
     .state_setter_note = " and a continuous state (fmi3SetContinuousStates sets states in model "
                          "exchange)",
     .step_discarded_state = AK_STEP_MODE, /* FMI 3 has no StepFailed state */
-    /* Magic "AKinFMU3", distinct from FMI 2's "AKinFMUs"; no input derivatives in FMI 3. */
     .state_format = {"AKinFMU3", 1u, "FMI 3 FMU state", "instantiationToken", "interface",
                      "FMUState", "fmi3GetFMUState", "fmi3DeserializeFMUState",
                      "fmi3SerializedFMUStateSize", false},
@@ -116,7 +108,7 @@ const ak_layer FMI3_LAYER = {
     .elements_at = elements_at,
     .time_vr = &AK3_TIME_VALUE_REFERENCE,
     .refuse_real = refuse_real,
-    .name_of = name_of,
+    .name_of = name_of_vr,
     .count_matches = ak3_count_matches,
     .errors_always_logged = true,
     .send = send,
@@ -134,8 +126,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     return fmi3_status(ak_set_values(c, &FMI3_RULES[AK3_SET_FLOAT64], vr, nvr, values, nValues));
 }
 
-/* The call of fmi3GetInt64 or fmi3SetInt64 allowed, its arrays given, every value reference an
- * Enumeration's (a scalar) and nValues one per value reference; else logs the first fault. */
+/* An Enumeration is a scalar: nValues is one per value reference. */
 static bool int64_call_valid(ak_instance *instance, ak3_function function,
                              const fmi3ValueReference vr[], size_t nvr, const void *values,
                              size_t nValues) {

@@ -1,10 +1,6 @@
-/* FMU states for both FMI versions: get, set, free, serialize, deserialize, and their byte image,
- * in the format each layer names (ak_state_format). A state holds its serialized form: one layout
- * and one validator. The layout is codegen/state_layout.py's (docs/capabilities.md#fmu-state;
- * tests/python/test_documentation.py reads the offsets back from real states).
- *
- * The instance name, the callbacks and the logging settings belong to the instance, not to the
- * simulation: setting a state leaves them. */
+/* FMU states for both FMI versions, in the format each layer names. A state holds its byte image:
+ * one layout (codegen/state_layout.py's), one validator. The instance name, callbacks and logging
+ * settings belong to the instance, not to the simulation: setting a state leaves them. */
 #include <math.h>
 #include <string.h>
 
@@ -28,9 +24,8 @@ enum {
                8 * AK_MAX_INPUTS * AK_MAX_INPUT_DERIVATIVE_ORDER + 4
 };
 
-/* The in-memory FMU state, in the instance's list of live states. A pointer the importer gives
- * back is looked up in that list by address, never dereferenced first: a stray or freed pointer
- * is refused without reading the memory it points to. */
+/* A pointer the importer gives back is looked up in the instance's list by address, never
+ * dereferenced first: a stray or freed pointer is refused without reading its memory. */
 struct ak_fmu_state_s {
     struct ak_fmu_state_s *next;
     unsigned char bytes[MAX_SIZE];
@@ -43,7 +38,6 @@ static size_t offset_derivative(int k, int n) {
            8u * (size_t)(AK_MAX_INPUT_DERIVATIVE_ORDER * k + n);
 }
 
-/* After the input derivatives, if the format has them. */
 static size_t offset_checksum(const ak_instance *instance) {
     const bool derivatives = instance->layer->state_format.input_derivatives;
     return offset_derivative(derivatives ? AK_MODEL.n_inputs : 0, 0);
@@ -53,7 +47,6 @@ static size_t state_size(const ak_instance *instance) {
     return offset_checksum(instance) + 4u;
 }
 
-/* The image's interface field: 0 model exchange, 1 co-simulation. */
 static uint32_t image_interface(ak_interface interface) {
     return interface == AK_MODEL_EXCHANGE ? 0u : 1u;
 }
@@ -86,14 +79,6 @@ static void encode(const ak_instance *instance, unsigned char bytes[MAX_SIZE]) {
     ak_put_u32(bytes + offset_checksum(instance), ak_crc32(bytes, offset_checksum(instance)));
 }
 
-/* The interface of an image as an adjective ("a model-exchange instance") or as a noun. */
-static const char *interface_words(uint32_t interface, bool adjective) {
-    if (interface == 0) {
-        return adjective ? "model-exchange" : "model exchange";
-    }
-    return interface == 1 ? "co-simulation" : "unknown";
-}
-
 /* The state of an image's state field that an instance of its interface can be in, or 0. */
 static ak_state decoded_state(const ak_layer *layer, uint32_t code, uint32_t interface) {
     for (int bit = 0; bit < AK_N_STATES; bit++) {
@@ -105,9 +90,8 @@ static ak_state decoded_state(const ak_layer *layer, uint32_t code, uint32_t int
     return (ak_state)0;
 }
 
-/* The checks of the image as such: length, magic, version, size, checksum, token. */
-static bool image_intact(const ak_instance *instance, const char *function,
-                         const unsigned char *bytes, size_t size) {
+static bool valid(const ak_instance *instance, const char *function, const unsigned char *bytes,
+                  size_t size) {
     const ak_state_format *format = &instance->layer->state_format;
     if (size < OFFSET_TOKEN || memcmp(bytes + OFFSET_MAGIC, format->magic, 8) != 0) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: the %zu bytes are not an %s %s (%s)",
@@ -146,22 +130,16 @@ static bool image_intact(const ak_instance *instance, const char *function,
                function, format->token_name, token, AK_MODEL.model_identifier, AK_MODEL.guid);
         return false;
     }
-    return true;
-}
-
-/* Checks a byte string from its length to its last value; logs why not. */
-static bool valid(const ak_instance *instance, const char *function, const unsigned char *bytes,
-                  size_t size) {
-    if (!image_intact(instance, function, bytes, size)) {
-        return false;
-    }
-    const ak_state_format *format = &instance->layer->state_format;
     const uint32_t interface = ak_get_u32(bytes + OFFSET_INTERFACE);
     if (interface != image_interface(instance->interface)) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: the FMU state is of a %s instance (%s %u); this instance is for %s",
-               function, interface_words(interface, true), format->interface_name, interface,
-               interface_words(image_interface(instance->interface), false));
+               function,
+               interface == 0   ? "model-exchange"
+               : interface == 1 ? "co-simulation"
+                                : "unknown",
+               format->interface_name, interface,
+               instance->interface == AK_MODEL_EXCHANGE ? "model exchange" : "co-simulation");
         return false;
     }
     const uint32_t state = ak_get_u32(bytes + OFFSET_STATE);
@@ -212,37 +190,46 @@ static bool valid(const ak_instance *instance, const char *function, const unsig
     return true;
 }
 
-/* A state pointer the importer gives back: ours, still alive, or a logged error. */
-static ak_fmu_state *known_state(const ak_instance *instance, const char *function,
-                                 const void *state) {
-    ak_fmu_state *s = instance->live_states;
-    while (s != NULL && s != (const ak_fmu_state *)state) {
-        s = s->next;
+/* The link to a state pointer the importer gives back: ours, still alive; or NULL, logged. */
+static ak_fmu_state **known_state(ak_instance *instance, const char *function, const void *state) {
+    ak_fmu_state **link = &instance->live_states;
+    while (*link != NULL && *link != state) {
+        link = &(*link)->next;
     }
-    if (s == NULL) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
-               "%s: %s %s is not an FMU state made by %s or %s of this FMU (or it was freed)",
-               function, instance->layer->state_format.kind_argument,
-               state == NULL ? "NULL" : "given", instance->layer->state_format.getter,
-               instance->layer->state_format.deserializer);
+    if (*link != NULL) {
+        return link;
     }
-    return s;
+    ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+           "%s: %s %s is not an FMU state made by %s or %s of this FMU (or it was freed)",
+           function, instance->layer->state_format.kind_argument, state == NULL ? "NULL" : "given",
+           instance->layer->state_format.getter, instance->layer->state_format.deserializer);
+    return NULL;
 }
 
-/* The state object to fill: the one the importer passes back for reuse, or a new one. */
-static ak_fmu_state *state_to_fill(ak_instance *instance, const char *function, void **state) {
-    if (*state != NULL) {
-        return known_state(instance, function, *state);
+/* Fills the state the importer passes back for reuse, or a new one: with bytes, or encoded. */
+static ak_status fill_state(ak_instance *instance, const char *function, void **state,
+                            const unsigned char *bytes) {
+    ak_fmu_state *s = *state;
+    if (s != NULL && known_state(instance, function, s) == NULL) {
+        return AK_STATUS_ERROR;
     }
-    ak_fmu_state *s = instance->layer->allocate(instance, sizeof(ak_fmu_state));
     if (s == NULL) {
-        ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR, "%s: out of memory allocating an FMU state",
-               function);
-        return NULL;
+        s = instance->layer->allocate(instance, sizeof(ak_fmu_state));
+        if (s == NULL) {
+            ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
+                   "%s: out of memory allocating an FMU state", function);
+            return AK_STATUS_ERROR;
+        }
+        s->next = instance->live_states;
+        instance->live_states = s;
     }
-    s->next = instance->live_states;
-    instance->live_states = s;
-    return s;
+    if (bytes != NULL) {
+        memcpy(s->bytes, bytes, state_size(instance));
+    } else {
+        encode(instance, s->bytes);
+    }
+    *state = s;
+    return AK_STATUS_OK;
 }
 
 ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, void **state) {
@@ -250,24 +237,18 @@ ak_status ak_get_fmu_state(ak_instance *instance, const ak_function_rule *call, 
         !ak_not_null(instance, call->name, state, instance->layer->state_format.kind_argument)) {
         return AK_STATUS_ERROR;
     }
-    ak_fmu_state *s = state_to_fill(instance, call->name, state);
-    if (s == NULL) {
-        return AK_STATUS_ERROR;
-    }
-    encode(instance, s->bytes);
-    *state = s;
-    return AK_STATUS_OK;
+    return fill_state(instance, call->name, state, NULL);
 }
 
 ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, void *state) {
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const ak_fmu_state *s = known_state(instance, call->name, state);
-    if (s == NULL || !valid(instance, call->name, s->bytes, state_size(instance))) {
+    ak_fmu_state **link = known_state(instance, call->name, state);
+    if (link == NULL || !valid(instance, call->name, (*link)->bytes, state_size(instance))) {
         return AK_STATUS_ERROR;
     }
-    const unsigned char *bytes = s->bytes;
+    const unsigned char *bytes = (*link)->bytes;
     instance->state = decoded_state(instance->layer, ak_get_u32(bytes + OFFSET_STATE),
                                     image_interface(instance->interface));
     instance->time = ak_get_f64(bytes + OFFSET_TIME);
@@ -285,8 +266,7 @@ ak_status ak_set_fmu_state(ak_instance *instance, const ak_function_rule *call, 
         }
         ak_input_derivatives_changed(instance);
     }
-    /* The outputs are recomputed from the restored inputs and parameters, not trusted from the
-     * bytes (they hold the last valid ones, which stay if the evaluation fails). */
+    /* Recomputed, not trusted: the bytes hold the last valid outputs, kept if evaluation fails. */
     ak_instance_inputs_changed(instance);
     return AK_STATUS_OK;
 }
@@ -299,14 +279,11 @@ ak_status ak_free_fmu_state(ak_instance *instance, const ak_function_rule *call,
     if (*state == NULL) {
         return AK_STATUS_OK; /* nothing to free, as with free(NULL) */
     }
-    ak_fmu_state *s = known_state(instance, call->name, *state);
-    if (s == NULL) {
+    ak_fmu_state **link = known_state(instance, call->name, *state);
+    if (link == NULL) {
         return AK_STATUS_ERROR;
     }
-    ak_fmu_state **link = &instance->live_states;
-    while (*link != s) {
-        link = &(*link)->next;
-    }
+    ak_fmu_state *s = *link;
     *link = s->next;
     instance->layer->release(instance, s);
     *state = NULL;
@@ -328,8 +305,8 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *
     if (!ak_call_allowed(instance, call)) {
         return AK_STATUS_ERROR;
     }
-    const ak_fmu_state *s = known_state(instance, call->name, state);
-    if (s == NULL || !ak_not_null(instance, call->name, bytes, "serializedState")) {
+    ak_fmu_state **link = known_state(instance, call->name, state);
+    if (link == NULL || !ak_not_null(instance, call->name, bytes, "serializedState")) {
         return AK_STATUS_ERROR;
     }
     if (size < state_size(instance)) {
@@ -338,7 +315,7 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *
                state_size(instance), instance->layer->state_format.sizer);
         return AK_STATUS_ERROR;
     }
-    memcpy(bytes, s->bytes, state_size(instance));
+    memcpy(bytes, (*link)->bytes, state_size(instance));
     return AK_STATUS_OK;
 }
 
@@ -350,13 +327,7 @@ ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule
         !valid(instance, call->name, bytes, size)) {
         return AK_STATUS_ERROR;
     }
-    ak_fmu_state *s = state_to_fill(instance, call->name, state);
-    if (s == NULL) {
-        return AK_STATUS_ERROR;
-    }
-    memcpy(s->bytes, bytes, state_size(instance));
-    *state = s;
-    return AK_STATUS_OK;
+    return fill_state(instance, call->name, state, bytes);
 }
 
 void ak_free_all_fmu_states(ak_instance *instance) {

@@ -33,7 +33,6 @@ void ak_log_without_instance(void (*send)(const void *context, const char *messa
     send(context, message);
 }
 
-/* The model's messages go out through the instance's logger. */
 static void log_for_model(void *owner, ak_log_category category, ak_status status,
                           const char *message) {
     const ak_instance *instance = owner;
@@ -85,26 +84,18 @@ static ak_real_role real_role(const ak_variable *variable) {
     if (variable == NULL || variable->type != AK_TYPE_REAL) {
         return AK_REAL_ABSENT;
     }
-    if (variable->causality == AK_CAUSALITY_INPUT) {
-        return AK_REAL_INPUT;
-    }
-    if (variable->causality == AK_CAUSALITY_PARAMETER) {
-        return AK_REAL_PARAMETER;
-    }
-    if (variable->causality == AK_CAUSALITY_OUTPUT &&
-        ak_state_index(AK_MODEL.state_vrs, variable->value_reference) >= 0) {
-        return AK_REAL_STATE_OUTPUT;
-    }
-    return variable->group == AK_GROUP_DERIVED ? AK_REAL_DERIVED_OUTPUT
-           : variable->group == AK_GROUP_LAZY  ? AK_REAL_LAZY_OUTPUT
-                                               : AK_REAL_MAIN_OUTPUT;
+    const bool state = ak_state_index(AK_MODEL.state_vrs, variable->value_reference) >= 0;
+    return variable->causality == AK_CAUSALITY_INPUT                ? AK_REAL_INPUT
+           : variable->causality == AK_CAUSALITY_PARAMETER          ? AK_REAL_PARAMETER
+           : variable->causality == AK_CAUSALITY_OUTPUT && state    ? AK_REAL_STATE_OUTPUT
+           : variable->group == AK_GROUP_DERIVED                    ? AK_REAL_DERIVED_OUTPUT
+           : variable->group == AK_GROUP_LAZY                       ? AK_REAL_LAZY_OUTPUT
+                                                                    : AK_REAL_MAIN_OUTPUT;
 }
 
 void ak_instance_reset(ak_instance *instance) {
-    /* Every category when logging was asked for at instantiation. Without it, FMI 2 still reports
-     * errors and warnings unless switched off; FMI 3 nothing but errors, which its layer always
-     * logs (3.0.3: "If loggingOn is false [...] the FMU must not call logMessage, except for
-     * fmi3Error and fmi3Fatal"). */
+    /* Without loggingOn, FMI 2 still reports errors and warnings; FMI 3 only errors (3.0.3: "the
+     * FMU must not call logMessage, except for fmi3Error and fmi3Fatal"). */
     for (int category = 0; category < AK_N_LOG_CATEGORIES; category++) {
         instance->log_enabled[category] =
             instance->has_logger &&
@@ -123,10 +114,9 @@ void ak_instance_reset(ak_instance *instance) {
     for (unsigned int vr = 0; vr < AK_MAX_VARIABLES; vr++) {
         const ak_variable *variable = ak_variable_of(vr);
         instance->real_role[vr] = (unsigned char)real_role(variable);
-        instance->elements[vr] = (unsigned char)(variable != NULL ? 1 : 0);
-        if (instance->layer->elements_at != NULL) {
-            instance->elements[vr] = (unsigned char)instance->layer->elements_at(vr);
-        }
+        instance->elements[vr] = (unsigned char)(instance->layer->elements_at != NULL
+                                                     ? instance->layer->elements_at(vr)
+                                                     : variable != NULL);
         instance->data.values[vr] = variable != NULL ? variable->start : 0.0;
     }
     memset(instance->data.input_derivatives, 0, sizeof instance->data.input_derivatives);
@@ -205,8 +195,7 @@ ak_status ak_instance_update(ak_instance *instance, ak_group upto) {
             ak_log(instance, AK_LOG_CALLS, AK_STATUS_OK, "derived outputs evaluated");
         }
     }
-    /* FMI 2.0.4, 2.1.3 and FMI 3: Discard is the answer to "a function is outside of its
-     * domain"; Error would make the instance unusable, which it is not. */
+    /* Discard answers "a function is outside of its domain"; Error would make it unusable. */
     _Static_assert((int)AK_EVAL_OK == (int)AK_STATUS_OK &&
                        (int)AK_EVAL_WARNING == (int)AK_STATUS_WARNING &&
                        (int)AK_EVAL_FAILED == (int)AK_STATUS_DISCARD,

@@ -1,6 +1,5 @@
-/* One FMU instance as the runtime keeps it, whichever FMI version made it: nothing in globals, so
- * any number of instances live side by side. An FMI layer embeds it as the first member of its
- * own instance and describes itself once, as data (ak_layer). */
+/* One FMU instance, whichever FMI version made it: nothing in globals, so any number live side by
+ * side. A layer embeds it as its instance's first member and describes itself as data. */
 #ifndef ANGULAR_KINEMATICS_RUNTIME_INSTANCE_H
 #define ANGULAR_KINEMATICS_RUNTIME_INSTANCE_H
 
@@ -11,9 +10,8 @@
 #include "ak_compiler.h"
 #include "model.h"
 
-/* The states of the FMI 2 and FMI 3 state machines, one bit each so that a set of them is a mask.
- * StepMode is FMI 2's StepComplete. States no instance of these models ever enters (asynchronous
- * steps, structural parameters) are in the tables to keep them the standards'. */
+/* The states of FMI 2 and 3, one bit each so that a set is a mask; StepMode is FMI 2's
+ * StepComplete. States no instance enters are here to keep the tables the standards'. */
 typedef enum {
     AK_INSTANTIATED = 1 << 0,
     AK_CONFIGURATION_MODE = 1 << 1,
@@ -31,7 +29,6 @@ enum { AK_N_STATES = 11 };
 
 typedef enum { AK_MODEL_EXCHANGE = 1 << 0, AK_CO_SIMULATION = 1 << 1 } ak_interface;
 
-/* For each FMI function of a layer: its name, the states it may be called in, its interfaces. */
 typedef struct {
     const char *name;
     unsigned int allowed_states;
@@ -54,36 +51,28 @@ typedef struct {
 
 typedef struct ak_instance_s ak_instance;
 
-/* What an FMI layer tells the runtime of itself. */
 typedef struct {
     const char *state_names[AK_N_STATES]; /* by bit index, in the standard's words */
-    /* Why a function of the other interface is refused ([0] model exchange, [1] co-simulation),
-     * after "<function>: ". */
+    /* Why a function of the other interface is refused: [0] model exchange, [1] co-simulation. */
     const char *other_interface[2];
-    /* Argument names in messages: "vr", "nvr", "value", "nvr" (FMI 2); "valueReferences",
-     * "nValueReferences", "values", "nValues" (FMI 3). */
     const char *vr_name;
     const char *vr_count_name;
     const char *values_name;
     const char *values_count_name;
     const char *state_setter_note; /* added to the refusal of a set of a continuous state */
     ak_state step_discarded_state;
-    /* The FMU state's format, and the state each bit of the image's state field stands for (the
-     * layer's numbering of earlier releases). */
     ak_state_format state_format;
-    ak_state image_states[AK_N_STATES];
+    ak_state image_states[AK_N_STATES]; /* by bit of the image's state field */
     unsigned int possible_states[2]; /* by interface, as other_interface */
     /* How many values vr names (FMI 3: an array's), 0 for none; NULL: one per variable. */
     unsigned int (*elements_at)(unsigned int vr);
     /* The independent variable's value reference, readable as a Real value; NULL: none. */
     const unsigned int *time_vr;
-    /* Logs why vr (vr_name[index]) names no Real value a get, or a set, can read or write. */
     void (*refuse_real)(const ak_instance *instance, const char *function, size_t index,
                         unsigned int vr, bool set);
     /* The name of vr in messages (FMI 3: its array's); NULL: the variable's. */
     const char *(*name_of)(unsigned int vr);
-    /* True when n values (count_name) are the total elements of vr[], else logs; NULL: the count
-     * is that of the value references (FMI 2). */
+    /* True when n values are the total elements of vr[], else logs; NULL: one per vr (FMI 2). */
     bool (*count_matches)(const ak_instance *instance, const char *function, const char *count_name,
                           size_t n, size_t total, const unsigned int vr[], size_t n_vr);
     /* FMI 3.0.3: "error logging is always enabled unless the logMessage callback function
@@ -96,8 +85,7 @@ typedef struct {
     void (*release)(const ak_instance *instance, void *memory);
 } ak_layer;
 
-/* The role of a value reference in a get or set, in increasing order of what a get must bring up
- * to date. */
+/* A value reference's role, in increasing order of what a get must bring up to date. */
 typedef enum {
     AK_REAL_ABSENT = 0, /* no Real variable has this value reference */
     AK_REAL_INPUT,
@@ -109,8 +97,7 @@ typedef enum {
     AK_REAL_DERIVED_OUTPUT
 } ak_real_role;
 
-/* A get or set checked and kept (values.c): importers ask the same at every communication point.
- * nvr 0: none. */
+/* A get or set checked and kept: importers ask the same at every communication point. */
 typedef struct {
     size_t nvr;
     size_t n_values;
@@ -119,7 +106,6 @@ typedef struct {
     bool one_run;       /* the values follow each other (a set: always, of inputs) */
 } ak_kept_request;
 
-/* When the outputs are computed. */
 typedef struct {
     bool stale;         /* an input or parameter changed since the main group was computed */
     bool lazy_stale;    /* the main group was computed since the lazy group was */
@@ -147,8 +133,7 @@ struct ak_instance_s {
     unsigned char elements[AK_MAX_VARIABLES]; /* ak_layer.elements_at */
     ak_model_data data;
     ak_outputs outputs;
-    /* The FMI function that prefixes the model's messages while it runs one that logs (output
-     * derivatives); NULL otherwise: a model never names an FMI function itself. */
+    /* The FMI function prefixing the model's messages (a model never names one itself), or NULL. */
     const char *calling;
     struct ak_fmu_state_s *live_states; /* made by this instance and not yet freed */
     ak_kept_request kept_get, kept_set;
@@ -169,13 +154,11 @@ void ak_log_without_instance(void (*send)(const void *context, const char *messa
 
 const char *ak_state_name(const ak_instance *instance, ak_state state);
 
-/* The full check of ak_call_allowed, out of line: logs a refused call and traces a legal one in
- * logCalls. False for a NULL instance. */
+/* ak_call_allowed's full check, out of line: logs a refused call, traces a legal one. */
 bool ak_call_checked(const ak_instance *instance, const ak_function_rule *rule);
 
-/* True for a legal call with the trace off, nothing logged. Inline, so that it costs two mask
- * tests and no call; with the table a constant, the compiler drops the interface test of most
- * functions. */
+/* A legal call with the trace off. Inline: two mask tests and no call; with the table a constant,
+ * the compiler drops the interface test of most functions. */
 static inline bool ak_call_passes(const ak_instance *instance, const ak_function_rule *rule) {
     const bool both = rule->interfaces == (AK_MODEL_EXCHANGE | AK_CO_SIMULATION);
     return instance != NULL && (rule->allowed_states & (unsigned int)instance->state) != 0 &&
@@ -183,14 +166,12 @@ static inline bool ak_call_passes(const ak_instance *instance, const ak_function
            !ak_log_on(instance, AK_LOG_CALLS);
 }
 
-/* The check at the top of every entry point taking an instance: false for NULL, a function of the
- * other interface or a state not allowed (both logged). */
+/* False for NULL, a function of the other interface or a state not allowed (both logged). */
 static inline bool ak_call_allowed(const ak_instance *instance, const ak_function_rule *rule) {
     return ak_call_passes(instance, rule) || ak_call_checked(instance, rule);
 }
 
-/* Logs "<function>: <pointer_name> is NULL", with " with <count_name> = <n>" if count_name is not
- * NULL; false. */
+/* Logs "<function>: <pointer_name> is NULL[ with <count_name> = <n>]"; false. */
 bool ak_refuse_null(const ak_instance *instance, const char *function, size_t n,
                     const char *count_name, const char *pointer_name);
 /* NULL is fine only when there is nothing to read or write. */
@@ -204,8 +185,6 @@ static inline bool ak_not_null(const ak_instance *instance, const char *function
                                const void *pointer, const char *name) {
     return pointer != NULL || ak_refuse_null(instance, function, 0, NULL, name);
 }
-/* The call of a getter or setter allowed, and vr and values given when there is anything to
- * read or write. */
 static AK_ALWAYS_INLINE bool ak_values_call_valid(const ak_instance *instance,
                                                   const ak_function_rule *call,
                                                   const unsigned int vr[], size_t nvr,
@@ -217,20 +196,17 @@ static AK_ALWAYS_INLINE bool ak_values_call_valid(const ak_instance *instance,
                     instance->layer->values_name);
 }
 
-/* Starts an instance whose layer fields are set. False when the name cannot be allocated
- * (nothing to free then). */
+/* False when the name cannot be allocated (nothing to free then). */
 bool ak_instance_start(ak_instance *instance, const ak_layer *layer, const char *function,
                        const char *name, ak_interface interface, bool has_logger, bool logging_on);
 
-/* The instance as just instantiated (instantiation and reset). */
 void ak_instance_reset(ak_instance *instance);
 
 static inline ak_real_role ak_real_role_of(const ak_instance *instance, unsigned int vr) {
     return vr < AK_MAX_VARIABLES ? (ak_real_role)instance->real_role[vr] : AK_REAL_ABSENT;
 }
 
-/* Brings the output groups up to `upto` up to date, evaluating only what is stale (traced in
- * logCalls); OK, WARNING, or DISCARD after a failed evaluation (the instance stays usable). */
+/* Evaluates what is stale up to `upto`; DISCARD after a failed evaluation (the instance usable). */
 ak_status ak_instance_update(ak_instance *instance, ak_group upto);
 
 /* An input, state or parameter changed: one store, so that a setter pays no more. */

@@ -1,8 +1,6 @@
-/* What the runtime does for an FMI layer, FMI-independent; the layer maps the ak_status. A function
- * given the FMI function's table entry (`call`) checks the call first; one given only its name
- * (`function`) is called after the layer's own checks. A refused call changes nothing.
- *
- * The runtime's files call one way, each only those before it: instance.c < values.c <
+/* The runtime for the FMI layers, which map the ak_status. A function given the table entry
+ * (`call`) checks the call first; one given its name (`function`) comes after the layer's checks.
+ * A refused call changes nothing. Each file calls only those before it: instance.c < values.c <
  * derivatives.c < stepping.c, continuous.c, fmu_states.c < lifecycle.c. */
 #ifndef ANGULAR_KINEMATICS_RUNTIME_H
 #define ANGULAR_KINEMATICS_RUNTIME_H
@@ -13,8 +11,7 @@
 
 /* --- values (values.c) ------------------------------------------------------------------------- */
 
-/* After the input derivatives changed: recomputes data.any_input_derivative; the outputs go stale
- * if they use input derivatives. */
+/* Recomputes data.any_input_derivative; the outputs go stale if they use input derivatives. */
 void ak_input_derivatives_changed(ak_instance *instance);
 /* Real values: vr[i] names elements[vr[i]] values (FMI 2: one; FMI 3: an array's), n_values in
  * all. A get evaluates at most once per change of inputs. */
@@ -23,7 +20,6 @@ ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
 ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, const double values[],
                         size_t n_values);
-/* The variable of a scalar value reference, of the given type, or NULL after logging why not. */
 const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
                                        unsigned int vr, size_t index, ak_type type);
 /* Of a checked variable: whether a parameter may be set now, to this value (logged if not). */
@@ -91,7 +87,6 @@ ak_status ak_serialize_fmu_state(ak_instance *instance, const ak_function_rule *
                                  unsigned char bytes[], size_t size);
 ak_status ak_deserialize_fmu_state(ak_instance *instance, const ak_function_rule *call,
                                    const unsigned char bytes[], size_t size, void **state);
-/* Frees the FMU states the importer did not free. */
 void ak_free_all_fmu_states(ak_instance *instance);
 
 /* --- life cycle (lifecycle.c) ------------------------------------------------------------------ */

@@ -1,6 +1,5 @@
-/* Gets and sets of Real values, one path for both FMI layers, and what an Integer get or set
- * shares with them. A request checked once is kept (ak_kept_request), so that the same request at
- * the next communication point costs one comparison. */
+/* Gets and sets of Real values, one path for both FMI layers. A request checked once is kept, so
+ * that the same request at the next communication point costs one comparison. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -8,8 +7,7 @@
 #include "ak_bytes.h"
 #include "runtime.h"
 
-/* The counts of the goals' gets as constants: a few moves, not a memcpy (gcc made one of 12 a
- * slow rep movs). */
+/* Constant counts: a few moves, not a memcpy (gcc made one of 12 a slow rep movs). */
 static AK_ALWAYS_INLINE void copy_values(double *to, const double *from, size_t n) {
     if (n == 12) {
         for (size_t k = 0; k < 12; k++) {
@@ -40,10 +38,6 @@ void ak_input_derivatives_changed(ak_instance *instance) {
     }
 }
 
-static const char *type_name(ak_type type) {
-    return type == AK_TYPE_INTEGER ? "Integer" : "Real";
-}
-
 const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *function,
                                        unsigned int vr, size_t index, ak_type type) {
     const ak_variable *variable = ak_variable_of(vr);
@@ -56,7 +50,8 @@ const ak_variable *ak_variable_of_type(const ak_instance *instance, const char *
     if (variable->type != type) {
         ak_log(instance, AK_LOG_ERROR, AK_STATUS_ERROR,
                "%s: %s[%zu] = %u is %s, of type %s, not %s", function, instance->layer->vr_name,
-               index, vr, variable->name, type_name(variable->type), type_name(type));
+               index, vr, variable->name, variable->type == AK_TYPE_INTEGER ? "Integer" : "Real",
+               type == AK_TYPE_INTEGER ? "Integer" : "Real");
         return NULL;
     }
     return variable;
@@ -102,7 +97,6 @@ void ak_store(ak_instance *instance, const char *function, unsigned int vr, doub
     }
 }
 
-/* Logs why vr (vr_name[i]) names no Real value to get or set: the layer's words, or FMI 2's. */
 static void refuse_real(const ak_instance *instance, const char *function, size_t i,
                         unsigned int vr, bool set) {
     if (instance->layer->refuse_real != NULL) {
@@ -112,7 +106,6 @@ static void refuse_real(const ak_instance *instance, const char *function, size_
     }
 }
 
-/* Whether the n values of the layer's calls are the total of vr[]'s. */
 static bool count_matches(const ak_instance *instance, const char *function,
                           const unsigned int vr[], size_t nvr, size_t n, size_t total) {
     return n == total || instance->layer->count_matches == NULL ||
@@ -120,7 +113,6 @@ static bool count_matches(const ak_instance *instance, const char *function,
                                           n, total, vr, nvr);
 }
 
-/* Brings up to date what a get of these roles reads. */
 static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int roles) {
     if (roles & (1u << AK_REAL_DERIVED_OUTPUT)) {
         return ak_instance_update(instance, AK_GROUP_DERIVED);
@@ -137,8 +129,6 @@ static AK_ALWAYS_INLINE ak_status update_for(ak_instance *instance, unsigned int
     return AK_STATUS_OK;
 }
 
-/* Whether vr[] names n_values Real values a get can read (the time included); else logs why not.
- * *one_run: the values follow each other. */
 static bool check_get(const ak_instance *instance, const char *function, const unsigned int vr[],
                       size_t nvr, size_t n_values, unsigned int *roles, bool *one_run) {
     size_t total = 0;
@@ -217,7 +207,6 @@ static AK_NOINLINE ak_status get_checked(ak_instance *instance, const ak_functio
     return read_values(instance, roles, one_run, vr, nvr, values, n_values);
 }
 
-/* Whether vr[i] names values a set may write (inputs or parameters); else logs why not. */
 static bool settable(const ak_instance *instance, const char *function, size_t i,
                      unsigned int vr) {
     const ak_real_role role = ak_real_role_of(instance, vr);
@@ -239,8 +228,6 @@ static bool settable(const ak_instance *instance, const char *function, size_t i
     return false;
 }
 
-/* Whether the values values[k ..] of vr[i] may be stored: finite, and a parameter's in its range
- * and settable now; else logs the first that is not. */
 static bool storable(const ak_instance *instance, const char *function, size_t i,
                      unsigned int vr, const double values[], size_t k) {
     const ak_layer *layer = instance->layer;
@@ -265,9 +252,8 @@ static bool storable(const ak_instance *instance, const char *function, size_t i
     return true;
 }
 
-/* Whether every value of a set may be stored, checked in the order the layer's messages are
- * numbered in: each value reference and its values in turn (FMI 2), or every value reference,
- * then the count, then the values (FMI 3). */
+/* In the order the layer's messages number them: each value reference and its values in turn
+ * (FMI 2), or every value reference, then the count, then the values (FMI 3). */
 static bool check_set(const ak_instance *instance, const char *function, const unsigned int vr[],
                       size_t nvr, const double values[], size_t n_values) {
     const bool counted = instance->layer->count_matches != NULL;
@@ -305,8 +291,7 @@ ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
     return get_checked(instance, call, vr, nvr, values, n_values);
 }
 
-/* Stores n finite values of consecutive inputs from first, or nothing (false) if one is not
- * finite. The goals' counts as constants, so that the compiler unrolls (docs/performance.md). */
+/* All or nothing (false: one is not finite); constant counts, so that the compiler unrolls. */
 static AK_ALWAYS_INLINE bool store_inputs(ak_instance *instance, unsigned int first,
                                           const double values[], size_t n) {
     double *target = &instance->data.values[first];
@@ -343,9 +328,8 @@ static AK_NOINLINE ak_status set_checked(ak_instance *instance, const ak_functio
 ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
                         const unsigned int vr[], size_t nvr, const double values[],
                         size_t n_values) {
-    /* The set of the last step's inputs again, or of one input array, untraced, no input
-     * derivative to forget: only the values need a check, done as they are stored; if one is not
-     * finite, the full check names it. */
+    /* The last step's inputs again, or one input array, untraced, no input derivative to forget:
+     * the values are checked as they are stored; the full check names one not finite. */
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
     if (ak_call_passes(instance, call) && vr != NULL && values != NULL &&
         !instance->data.any_input_derivative &&
