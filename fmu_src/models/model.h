@@ -84,7 +84,7 @@ typedef struct {
 
 /* The outputs a model computes from its other outputs by core functions that its description
  * names (`computed_by`), generated into <Model>_derived.c; their group is AK_GROUP_DERIVED. The FMI
- * layers reach them only through ak_outputs_update, ak_model_jacobian and
+ * layers reach them only through ak_instance_update, ak_model_jacobian and
  * ak_model_output_derivatives. */
 typedef struct {
     /* The value references of the outputs they are computed from that are not derived
