@@ -27,6 +27,7 @@ const ak_function_rule FMI3_RULES[AK3_N_FUNCTIONS] = {
     [AK3_TERMINATE] = {"fmi3Terminate", AK_EVENT_MODE | AK_STEP_MODE | AK_CONTINUOUS_TIME_MODE,
                        BOTH},
     [AK3_RESET] = {"fmi3Reset", ANY_STATE, BOTH},
+    /* The other types' getters and setters take Float64's states (fmi3_unsupported.c). */
     [AK3_GET_FLOAT64] = {"fmi3GetFloat64", READABLE, BOTH},
     [AK3_GET_INT64] = {"fmi3GetInt64", READABLE, BOTH},
     [AK3_SET_FLOAT64] = {"fmi3SetFloat64", WRITABLE, BOTH},

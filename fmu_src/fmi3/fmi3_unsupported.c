@@ -4,10 +4,11 @@
 
 #include "fmi3_layer.h"
 
-static fmi3Status absent_type(fmi3Instance c, const char *name, const fmi3ValueReference vr[],
-                              size_t nvr, const void *values, size_t nValues) {
-    /* The states of fmi3GetFloat64 or fmi3SetFloat64. */
-    ak_function_rule rule = FMI3_RULES[name[4] == 'S' ? AK3_SET_FLOAT64 : AK3_GET_FLOAT64];
+/* like: fmi3GetFloat64's or fmi3SetFloat64's row, whose states every type shares. */
+static fmi3Status absent_type(fmi3Instance c, ak3_function like, const char *name,
+                              const fmi3ValueReference vr[], size_t nvr, const void *values,
+                              size_t nValues) {
+    ak_function_rule rule = FMI3_RULES[like];
     rule.name = name;
     if (!ak_call_allowed(c, &rule)) {
         return fmi3Error;
@@ -38,114 +39,114 @@ static fmi3Status not_supported(fmi3Instance c, const char *function, const char
 
 fmi3Status fmi3GetFloat32(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float32 values[], size_t nValues) {
-    return absent_type(c, "fmi3GetFloat32", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetFloat32", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetFloat32(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Float32 values[], size_t nValues) {
-    return absent_type(c, "fmi3SetFloat32", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetFloat32", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetInt8(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                        fmi3Int8 values[], size_t nValues) {
-    return absent_type(c, "fmi3GetInt8", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetInt8", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetInt8(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                        const fmi3Int8 values[], size_t nValues) {
-    return absent_type(c, "fmi3SetInt8", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetInt8", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetUInt8(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         fmi3UInt8 values[], size_t nValues) {
-    return absent_type(c, "fmi3GetUInt8", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetUInt8", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetUInt8(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         const fmi3UInt8 values[], size_t nValues) {
-    return absent_type(c, "fmi3SetUInt8", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetUInt8", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetInt16(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         fmi3Int16 values[], size_t nValues) {
-    return absent_type(c, "fmi3GetInt16", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetInt16", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetInt16(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         const fmi3Int16 values[], size_t nValues) {
-    return absent_type(c, "fmi3SetInt16", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetInt16", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetUInt16(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          fmi3UInt16 values[], size_t nValues) {
-    return absent_type(c, "fmi3GetUInt16", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetUInt16", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetUInt16(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          const fmi3UInt16 values[], size_t nValues) {
-    return absent_type(c, "fmi3SetUInt16", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetUInt16", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetInt32(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         fmi3Int32 values[], size_t nValues) {
-    return absent_type(c, "fmi3GetInt32", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetInt32", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetInt32(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                         const fmi3Int32 values[], size_t nValues) {
-    return absent_type(c, "fmi3SetInt32", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetInt32", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetUInt32(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          fmi3UInt32 values[], size_t nValues) {
-    return absent_type(c, "fmi3GetUInt32", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetUInt32", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetUInt32(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          const fmi3UInt32 values[], size_t nValues) {
-    return absent_type(c, "fmi3SetUInt32", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetUInt32", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetUInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          fmi3UInt64 values[], size_t nValues) {
-    return absent_type(c, "fmi3GetUInt64", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetUInt64", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetUInt64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          const fmi3UInt64 values[], size_t nValues) {
-    return absent_type(c, "fmi3SetUInt64", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetUInt64", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetBoolean(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Boolean values[], size_t nValues) {
-    return absent_type(c, "fmi3GetBoolean", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetBoolean", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetBoolean(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Boolean values[], size_t nValues) {
-    return absent_type(c, "fmi3SetBoolean", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetBoolean", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetString(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          fmi3String values[], size_t nValues) {
-    return absent_type(c, "fmi3GetString", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetString", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetString(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          const fmi3String values[], size_t nValues) {
-    return absent_type(c, "fmi3SetString", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetString", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3GetBinary(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          size_t valueSizes[], fmi3Binary values[], size_t nValues) {
     (void)valueSizes;
-    return absent_type(c, "fmi3GetBinary", vr, nvr, values, nValues);
+    return absent_type(c, AK3_GET_FLOAT64, "fmi3GetBinary", vr, nvr, values, nValues);
 }
 
 fmi3Status fmi3SetBinary(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                          const size_t valueSizes[], const fmi3Binary values[], size_t nValues) {
     (void)valueSizes;
-    return absent_type(c, "fmi3SetBinary", vr, nvr, values, nValues);
+    return absent_type(c, AK3_SET_FLOAT64, "fmi3SetBinary", vr, nvr, values, nValues);
 }
 
 static const char NO_CLOCKS[] = "this FMU has no Clock variables";
