@@ -117,10 +117,10 @@ VARIABLES = [
     dict(name="angles_age", vr=59, causality="local", type="Dimensionless",
          description="co-simulation: steps taken since theta was last computed (0: theta is "
                      "that of q)", depends=[]),
-    dict(name="angles_path", vr=60, causality="local", type="Angle",
-         description="co-simulation: a bound on the rotation angle of the path of q since theta "
-                     "was last computed (the sum over those steps of 2.03 |q_new - q_old|, "
-                     "1-norm, or pi |q_new - q_old| where that is above 1/2)", depends=[]),
+    dict(name="angles_change_bound", vr=60, causality="local", type="Angle",
+         description="co-simulation: a bound on how far any angle has moved since theta was "
+                     "last computed (the sum over those steps of each step's bound, from the "
+                     "step's rotation and the singularity distance)", depends=[]),
     dict(name="q0", vr=44, shape=(4,), causality="parameter", type="Dimensionless",
          start=lambda i: 1.0 if i == 1 else 0.0, min=-1.7976931348623157e308, max=1.7976931348623157e308,
          description="initial quaternion, component {i} (scalar first); normalized at "

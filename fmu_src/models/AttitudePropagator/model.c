@@ -113,53 +113,75 @@ static ak_eval_status evaluate(ak_model_data *data) {
     }
     v[AP_VR_SINGULARITY_DISTANCE] = distance;
     v[AP_VR_ANGLES_AGE] = 0.0;
-    v[AP_VR_ANGLES_PATH] = 0.0;
+    v[AP_VR_ANGLES_CHANGE_BOUND] = 0.0;
     return AK_EVAL_OK;
 }
 
 /* Lazy angles, bit-identical to angles computed at every communication point. The angles
  * unwrap to the set nearest the last one computed, so computed from an older set they could
- * differ; they do not while theta1 and theta3 moved by at most L = 1.39 rad since and theta2 by
- * at most p <= 0.75: the other candidate set is pi away from the continued one in theta1 and
- * theta3 (core/attitude.h, sections 5, 6), so at squared distance at least 2 (pi - L)^2 = 6.2
- * from the last set, above the continued one's 2 L^2 + p^2 = 4.4, and each angle unwraps to
- * the continued one's turn (L < pi): the nearest is the continued one, which the computation at
- * every point would also have reached (unwrap and the choice of set depend on the reference only
- * through that). Along a path of rotation angle p from an attitude at singularity distance D, the
- * distance stays at least D - p (it moves by at most the rotation angle), theta2 moves at a rate
- * of at most |omega| (a component of omega along a unit axis) and theta1, theta3 at most |omega|
- * / d (a row of W^-1 is a cross product of two unit axes over det W, |det W| = d): by at most
- * the integral of dp / (D - p), ln(D / (D - p)), at most ln 4 = 1.39 while p <= 0.75 D (the
- * margin of L to pi/2 - p^2 / (4 pi) = 1.53, where the squared distances meet, covers rounding),
- * and d stays above D / 4. A step's rotation angle is 4 asin(|q_new - q_old| / 2) (2-norm;
- * |q_new - q_old| = 2 sin(angle / 4)): at most pi |q_new - q_old|, and at most 2.03 of it while
- * that is at most 1/2 (asin(x) / x grows: 4 asin(1/4) / (1/2) = 2.0214), taken with the 1-norm,
- * which is larger and needs no square root (the sum that angles_path, vr 60, holds): a square
- * root and a division here (a bound up to 3 times tighter) lengthened the chain the step's branch
- * waits for, and cost more time than the angles they saved on random rows. */
-static const double ANGLES_PATH_FRACTION = 0.75;
-static const double PI = 3.14159265358979323846;
+ * differ; they do not while every angle moved by at most L = 1.3 rad since: the other candidate
+ * set is pi away from the continued one in theta1 and theta3 (core/attitude.h, sections 5, 6),
+ * so at squared distance at least 2 (pi - L)^2 = 6.8 from the last set, above the continued
+ * one's 3 L^2 = 5.1, and each angle unwraps to the continued one's turn (L < pi): the nearest
+ * is the continued one, which the computation at every point would also have reached (unwrap
+ * and the choice of set depend on the reference only through that).
+ * The bound follows the chain R = R_i(phi1) R_j(phi2) R_c(phi3) of the sequence (c = i for
+ * proper Euler, else the third axis; a space-fixed sequence's theta is the chain reversed) along
+ * each step's rotation, exp of twice the step's vector v (core/attitude.h, section 4), fixed in
+ * the frame of omega. Body axis c seen in the fixed frame, u = R e_c, has azimuth phi1 about
+ * fixed axis i and its angle from that axis gives phi2; its distance from the axis is the
+ * singularity distance d = |e_i x u| (1 - d^2 = R[i][c]^2). So phi2 moves by at most the arc
+ * of u and phi1 by at most that arc over the least d on the way, which is at least d at the
+ * step's start minus the arc (d moves by at most the arc). In body components u turns about v by
+ * 2 |v|, an arc of 2 |v x e_c|; and the c component of omega is phi1_dot (e_i . R_j e_c) +
+ * phi3_dot, so phi3 moves by at most 2 |v_c| plus phi1's bound. In fixed components the same
+ * holds with the roles of phi1 and phi3, u and R^T e_i, c and i swapped. Within 5 singular
+ * distances (rounding of d included) or after a retaken step the next step computes them. */
+static const double ANGLES_CHANGE_LIMIT = 1.3;
 
-/* Before the state moves from v[q] to q_new: computes the angles at v[q] when a catch-up from
- * the last computed ones could differ after this step, and adds the step to the path. */
-static void step_angles(ak_model_data *data, const double q_new[4]) {
-    double *v = data->values;
-    double moved = 0.0;
-    for (int k = 0; k < 4; k++) {
-        moved += fabs(q_new[k] - v[AP_VR_Q + k]);
+/* The axis after a, and the one after that: (a + 1) % 3 and (a + 2) % 3 without a division. */
+static const int NEXT[3] = {1, 2, 0};
+static const int AFTER[3] = {2, 0, 1};
+
+/* R[i][c] of the unit quaternion q (core/attitude.c, ak_quat_to_matrix). */
+static double singular_entry(int i, int c, const double q[4]) {
+    if (c == i) {
+        const double a = q[1 + NEXT[i]], b = q[1 + AFTER[i]];
+        return 1.0 - 2.0 * (a * a + b * b);
     }
-    const double rotation = (moved <= 0.5 ? 2.03 : PI) * moved; /* the bounds above */
-    double path = v[AP_VR_ANGLES_PATH] + rotation;
-    /* D above 5 singular distances: d stays above 1.25 of them, off the singular choice. */
-    const double distance = v[AP_VR_SINGULARITY_DISTANCE];
-    if (v[AP_VR_ANGLES_AGE] >= 1.0 &&
-        !(path <= ANGLES_PATH_FRACTION * distance &&
-          distance > 5.0 * AK_ATTITUDE_SINGULAR_DISTANCE)) {
+    const double sign = c == NEXT[i] ? -1.0 : 1.0;
+    return 2.0 * (q[1 + i] * q[1 + c] + sign * q[0] * q[1 + (3 - i - c)]);
+}
+
+/* The step's bound on how far the angles move as the state turns from v[q] by the rotation of
+ * vector (retaken: by more than it). From the distance at the step's start, so that the square
+ * roots and the division run beside the quaternion update rather than after it. */
+static double angles_change(const ak_model_data *data, const double vector[3], bool retaken) {
+    const ak_sequence *sequence = sequence_of(data);
+    const int i = sequence->axes[sequence->kind == AK_SPACE_FIXED ? 2 : 0] - 1;
+    const int c = sequence->proper_euler ? i : 3 - i - (sequence->axes[1] - 1);
+    const int free_axis = frame_of(data) == AK_FRAME_BODY ? c : i;
+    const double a = vector[NEXT[free_axis]], b = vector[AFTER[free_axis]];
+    const double arc = 2.0 * sqrt(a * a + b * b);
+    const double s = singular_entry(i, c, &data->values[AP_VR_Q]);
+    const double least = sqrt((1.0 - s) * (1.0 + s)) - arc; /* NaN past 1 by rounding */
+    return least > 5.0 * AK_ATTITUDE_SINGULAR_DISTANCE && !retaken
+               ? arc / least + 2.0 * fabs(vector[free_axis])
+               : 2.0 * ANGLES_CHANGE_LIMIT;
+}
+
+/* Before the state moves: computes the angles at v[q] when a catch-up from the last computed
+ * ones could differ after this step of bound change, and adds it. */
+static void step_angles(ak_model_data *data, double change) {
+    double *v = data->values;
+    double bound = v[AP_VR_ANGLES_CHANGE_BOUND] + change;
+    if (v[AP_VR_ANGLES_AGE] >= 1.0 && !(bound <= ANGLES_CHANGE_LIMIT)) {
         (void)evaluate(data); /* a unit q from the last step: cannot fail */
-        path = rotation;
+        bound = change;
     }
     v[AP_VR_ANGLES_AGE] += 1.0;
-    v[AP_VR_ANGLES_PATH] = path; /* at most 2 pi per step: finite */
+    /* Finite, as every value of an FMU state: past the limit, the next step computes them. */
+    v[AP_VR_ANGLES_CHANGE_BOUND] = bound <= ANGLES_CHANGE_LIMIT ? bound : 2.0 * ANGLES_CHANGE_LIMIT;
 }
 
 /* The lazy group, computed only when one of them is read: der(q) (fmi2GetDerivatives computes
@@ -225,7 +247,7 @@ static ak_eval_status initialize(ak_model_data *data) {
     ak_quat_to_matrix(&v[AP_VR_Q], R);
     ak_attitude_angles(sequence_of(data), R, NULL, &v[AP_VR_THETA], &distance);
     v[AP_VR_ANGLES_AGE] = 0.0;
-    v[AP_VR_ANGLES_PATH] = 0.0;
+    v[AP_VR_ANGLES_CHANGE_BOUND] = 0.0;
     return AK_EVAL_OK;
 }
 
@@ -242,7 +264,7 @@ static ak_eval_status step(ak_model_data *data, double h) {
     }
     double w1[3], vector[3];
     double q[4] = {q_now[0], q_now[1], q_now[2], q_now[3]};
-    bool derivatives_given = false, first = false;
+    bool derivatives_given = false, first = false, retaken = false;
     const bool omega_dot_given = v[AP_VR_OMEGA_DOT] != 0.0 || v[AP_VR_OMEGA_DOT + 1] != 0.0 ||
                                  v[AP_VR_OMEGA_DOT + 2] != 0.0;
     if (!omega_dot_given && !data->any_input_derivative) {
@@ -261,11 +283,12 @@ static ak_eval_status step(ak_model_data *data, double h) {
         if (history && v[AP_VR_FIRST_STEP_PENDING] != 0.0) {
             /* Retake the first step with the Hermite cubic over it (core/attitude.h, section 4). */
             const double none[3] = {0.0, 0.0, 0.0};
-            double previous[4][3], retaken[3];
+            double previous[4][3], retaken_vector[3];
             ak_attitude_input_polynomial(&v[AP_VR_OMEGA_PREVIOUS], &v[AP_VR_OMEGA_DOT_PREVIOUS],
                                          none, &v[AP_VR_OMEGA], w1, -hp, previous);
-            ak_attitude_step_vector(frame_of(data), previous, hp, retaken);
-            ak_attitude_retake_step(frame_of(data), &v[AP_VR_FIRST_STEP_VECTOR], retaken, q);
+            ak_attitude_step_vector(frame_of(data), previous, hp, retaken_vector);
+            ak_attitude_retake_step(frame_of(data), &v[AP_VR_FIRST_STEP_VECTOR], retaken_vector, q);
+            retaken = true;
         }
         if (derivatives_given) {
             double c[4][3];
@@ -278,6 +301,7 @@ static ak_eval_status step(ak_model_data *data, double h) {
         }
         first = derivatives_given && !history;
     }
+    const double change = angles_change(data, vector, retaken);
     if (!ak_attitude_advance(frame_of(data), vector, q, NULL)) {
         /* Logged as the step's result: the layer discards the step (the instance stays usable). */
         ak_model_log(data, AK_LOG_WARNING, AK_STATUS_DISCARD,
@@ -287,7 +311,7 @@ static ak_eval_status step(ak_model_data *data, double h) {
                      v[AP_VR_OMEGA + 2], h);
         return AK_EVAL_FAILED;
     }
-    step_angles(data, q);
+    step_angles(data, change);
     for (int k = 0; k < 4; k++) {
         v[AP_VR_Q + k] = q[k];
     }

@@ -64,7 +64,7 @@ const ak3_array AK3_ARRAYS[AK_MAX_VARIABLES] = {
     [57] = {"first_step_vector", 55, 3, 1},
     [58] = {"first_step_pending", 58, 1, 0},
     [59] = {"angles_age", 59, 1, 0},
-    [60] = {"angles_path", 60, 1, 0},
+    [60] = {"angles_change_bound", 60, 1, 0},
 };
 
 const unsigned int AK3_TIME_VALUE_REFERENCE = 1000;
