@@ -3,13 +3,15 @@ computed when read, from the last ones computed, and by the step itself when a l
 differ. Reading them rarely must give the bits of reading them at every communication point:
 for every sequence and both frames, through fast tumbling, the singular configuration, steps
 that turn by more than a radian, input derivatives (the retaken first step) and an FMU state
-taken while the angles wait."""
+taken while the angles wait. And the bound a step adds covers how far each angle moves along
+it, near the singular attitude and away from it."""
 import ctypes
 
 import numpy as np
 import pytest
 
-from attitude_support import FRAME, OMEGA, Q, THETA, make_attitude_instance  # noqa: F401
+from attitude_support import FRAME, OMEGA, Q, THETA, make_attitude_instance, qmul  # noqa: F401
+from codegen import project
 
 ANGLE_OUTPUTS = THETA + ["theta_dot[1]", "theta_dot[3]", "R[1,3]", "singularity_distance"]
 
@@ -173,3 +175,55 @@ def test_fmi3_angles_read_rarely_are_fmi2_angles_read_at_every_step(sequence,
                         assert values["R"][2] == dense[n]["R[1,3]"]
                     for name, value in expected.items():
                         assert np.array(value).tobytes() == values[name].tobytes(), (n, name)
+
+
+def quaternion_of_sequence(name, theta):
+    """q of the angles theta of sequence name (numpy, independent of the C core): body-fixed
+    a1-a2-a3 is R_a1(theta1) R_a2(theta2) R_a3(theta3), space-fixed R_a3(theta3) R_a2(theta2)
+    R_a1(theta1)."""
+    factors = []
+    for axis, angle in zip(project.sequence_axes(name), theta):
+        factor = np.zeros(4)
+        factor[0], factor[axis] = np.cos(angle / 2), np.sin(angle / 2)
+        factors.append(factor)
+    if name.startswith("space"):
+        factors.reverse()
+    return qmul(qmul(factors[0], factors[1]), factors[2])
+
+
+@pytest.mark.parametrize("sequence", range(1, 25))
+@pytest.mark.parametrize("frame", ["body", "fixed"])
+def test_the_bound_of_a_step_covers_how_far_each_angle_moves(sequence, frame, make_attitude_instance):
+    """The bound one step adds (angles_change_bound after a step from computed angles) is at least
+    how far each angle moves along the step: the angles read at 100 substeps of the same rotation
+    (omega held, so the substeps turn about the same axis), from attitudes 0.03 and 0.3 rad from
+    the singular one, turning by 0.01 and 0.1 rad about random axes."""
+    name = project.SEQUENCES[sequence - 1]
+    rng = np.random.default_rng(sequence * 2 + FRAME[frame])
+    h, substeps, checked = 0.1, 100, 0
+    for offset in (0.03, 0.3):
+        middle = offset if project.sequence_is_proper_euler(name) else np.pi / 2 - offset
+        q0 = quaternion_of_sequence(name, [rng.uniform(-3, 3), middle, rng.uniform(-3, 3)])
+        for turn in (0.01, 0.1):
+            axis = rng.normal(size=3)
+            omega = dict(zip(OMEGA, turn / h * axis / np.linalg.norm(axis)))
+            parameters = {"sequence": sequence, "frame": FRAME[frame],
+                          **{f"q0[{k + 1}]": q0[k] for k in range(4)}}
+            whole = make_attitude_instance()
+            whole.initialize(parameters=parameters, inputs={"omega_dot[1]": 0.0})
+            assert abs(whole.get(["singularity_distance"])[0] - np.sin(offset)) < 1e-9
+            whole.set(omega)
+            whole.fmu.doStep(0.0, h)
+            bound = image_value(whole, "angles_change_bound")
+            parts = make_attitude_instance()
+            parts.initialize(parameters=parameters, inputs={"omega_dot[1]": 0.0})
+            start = np.array(parts.get(THETA))
+            moved = np.zeros(3)
+            for k in range(substeps):
+                parts.set(omega)
+                parts.fmu.doStep(k * h / substeps, h / substeps)
+                moved = np.maximum(moved, np.abs(np.array(parts.get(THETA)) - start))
+            if bound <= 1.3:  # above it, the next step computes the angles
+                checked += 1
+                assert moved.max() <= bound * (1 + 1e-9), (offset, turn, moved, bound)
+    assert checked >= 3
