@@ -157,9 +157,10 @@ static double singular_entry(int i, int c, const double q[4]) {
  * vector (retaken: by more than it). From the distance at the step's start, so that the square
  * roots and the division run beside the quaternion update rather than after it. */
 static double angles_change(const ak_model_data *data, const double vector[3], bool retaken) {
+    /* The chain's first and last axes: a space-fixed sequence's chain is its axes reversed. */
     const ak_sequence *sequence = sequence_of(data);
-    const int i = sequence->axes[sequence->kind == AK_SPACE_FIXED ? 2 : 0] - 1;
-    const int c = sequence->proper_euler ? i : 3 - i - (sequence->axes[1] - 1);
+    const bool space = sequence->kind == AK_SPACE_FIXED;
+    const int i = sequence->axes[space ? 2 : 0] - 1, c = sequence->axes[space ? 0 : 2] - 1;
     const int free_axis = frame_of(data) == AK_FRAME_BODY ? c : i;
     const double a = vector[NEXT[free_axis]], b = vector[AFTER[free_axis]];
     const double arc = 2.0 * sqrt(a * a + b * b);
