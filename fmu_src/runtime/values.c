@@ -284,6 +284,7 @@ ak_status ak_get_values(ak_instance *instance, const ak_function_rule *call,
         /* The goals' counts as constants, so that the compiler unrolls (docs/performance.md). */
         if (nvr == 12 ? same_request(kept, vr, 12, n_values)
             : nvr == 4 ? same_request(kept, vr, 4, n_values)
+            : nvr == 1 ? same_request(kept, vr, 1, n_values) /* FMI 3's get of one array */
                        : same_request(kept, vr, nvr, n_values)) {
             return read_values(instance, kept->roles, kept->one_run, vr, nvr, values, n_values);
         }
