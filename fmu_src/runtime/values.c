@@ -297,8 +297,8 @@ static AK_ALWAYS_INLINE bool store_inputs(ak_instance *instance, unsigned int fi
                                           const double values[], size_t n) {
     double *target = &instance->data.values[first];
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
-    const ak_store_result stored = n == 3          ? ak_store_if_finite(target, values, 3)
-                                   : n == n_inputs ? ak_store_if_finite(target, values, n_inputs)
+    const ak_store_result stored = n == n_inputs ? ak_store_if_finite(target, values, n_inputs)
+                                   : n == 3        ? ak_store_if_finite(target, values, 3)
                                                    : ak_store_if_finite(target, values, n);
     if (stored == AK_STORE_CHANGED) {
         ak_instance_inputs_changed(instance);
@@ -334,11 +334,11 @@ ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
     if (ak_call_passes(instance, call) && vr != NULL && values != NULL &&
         !instance->data.any_input_derivative &&
-        (nvr == 1 ? vr[0] < n_inputs && n_values > 0 && instance->elements[vr[0]] == n_values
+        (nvr == n_inputs ? same_request(&instance->kept_set, vr, n_inputs, n_values)
          : nvr == 3 /* FMI 3's three input arrays: the FMI 3 / FMI 2 goal */
              ? same_request(&instance->kept_set, vr, 3, n_values)
-         : nvr == n_inputs ? same_request(&instance->kept_set, vr, n_inputs, n_values)
-                           : same_request(&instance->kept_set, vr, nvr, n_values)) &&
+         : nvr == 1 ? vr[0] < n_inputs && n_values > 0 && instance->elements[vr[0]] == n_values
+                    : same_request(&instance->kept_set, vr, nvr, n_values)) &&
         store_inputs(instance, vr[0], values, n_values)) {
         return AK_STATUS_OK;
     }
