@@ -334,9 +334,9 @@ ak_status ak_set_values(ak_instance *instance, const ak_function_rule *call,
     const size_t n_inputs = (size_t)AK_MODEL.n_inputs;
     if (ak_call_passes(instance, call) && vr != NULL && values != NULL &&
         !instance->data.any_input_derivative &&
-        (nvr == n_inputs ? same_request(&instance->kept_set, vr, n_inputs, n_values)
-         : nvr == 3 /* FMI 3's three input arrays: the FMI 3 / FMI 2 goal */
+        (nvr == 3 /* FMI 3's three input arrays: the FMI 3 / FMI 2 goal */
              ? same_request(&instance->kept_set, vr, 3, n_values)
+         : nvr == n_inputs ? same_request(&instance->kept_set, vr, n_inputs, n_values)
          : nvr == 1 ? vr[0] < n_inputs && n_values > 0 && instance->elements[vr[0]] == n_values
                     : same_request(&instance->kept_set, vr, nvr, n_values)) &&
         store_inputs(instance, vr[0], values, n_values)) {
