@@ -159,10 +159,8 @@ def run_binary(fmu, platform, description, interface, times, input_names, inputs
         head = [library_argument, "cross-check", model] if version == "2.0" \
             else [library_argument, model, "cross-check"]
         command = [*launch, str(runner.driver(version, model)), *head, *arguments]
-        # Under wine, a run that fails is tried once more: in a fresh-clone CI run (2026-11-28),
-        # with the suite's two workers and these runs side by side, the driver once exited 1
-        # with nothing on stderr, and the same runs alone then passed. A binary that fails
-        # fails again.
+        # Under wine, a run that fails is tried once more: beside the suite's other wine runs,
+        # wine has exited 1 at start with nothing on stderr. A binary that fails fails again.
         for _ in range(2 if runner.windows else 1):
             done = subprocess.run(command, input=rows, capture_output=True, text=True,
                                   timeout=300, env=wine_environment() if runner.windows else None)
